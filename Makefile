@@ -1,0 +1,87 @@
+# Reproducible environment + workflow entry points.
+#
+#   make venv       create .venv from environment.lock (hash-checked, Python 3.11 only)
+#   make test       run the test suite            (PYTEST_ARGS="-k foo -x" to pass options)
+#   make reproduce  run the Snakemake workflow    (CORES=2 by default)
+#   make lint       ruff check + ruff format --check
+#   make lock       regenerate environment.lock from requirements.in
+#   make clean      remove workflow outputs (results/, .snakemake/); keeps .venv
+
+SHELL := /bin/bash
+
+PYTHON      ?= python3
+REQUIRED_PY := 3.11
+VENV        := .venv
+STAMP       := $(VENV)/.stamp
+CORES       ?= 2
+PYTEST_ARGS ?=
+
+# Build backend installed (hash-checked, from the lock) before everything else, so the one
+# sdist-only dependency can be built with --no-build-isolation from pinned, hashed files.
+BUILD_PKGS := setuptools wheel packaging
+
+# Lock tool: uv in a throwaway venv outside the project (never in .venv).
+LOCK_TOOL_VENV ?= /tmp/inertial-repro-lock-tool
+UV_VERSION     ?= 0.13.9
+UV             := $(LOCK_TOOL_VENV)/bin/uv
+# Keep identical to the command recorded in the header of environment.lock.
+LOCK_ARGS := pip compile --generate-hashes --python-version 3.11 \
+	--python-platform x86_64-unknown-linux-gnu requirements.in -o environment.lock
+
+.PHONY: venv reproduce test lint lock clean check-python
+
+venv: $(STAMP)
+
+check-python:
+	@found="$$($(PYTHON) -c 'import platform; print(platform.python_version())' 2>/dev/null)"; \
+	if [ -z "$$found" ]; then \
+		echo "error: '$(PYTHON)' not found or not runnable; Python $(REQUIRED_PY).x is required" >&2; \
+		exit 1; \
+	fi; \
+	case "$$found" in \
+		$(REQUIRED_PY).*) ;; \
+		*) echo "error: '$(PYTHON)' is Python $$found, but Python $(REQUIRED_PY).x is required" \
+			"(environment.lock is pinned for $(REQUIRED_PY))" >&2; \
+		   exit 1 ;; \
+	esac
+
+$(STAMP): environment.lock
+	@$(MAKE) --no-print-directory check-python
+	rm -rf $(VENV)
+	$(PYTHON) -m venv $(VENV)
+	awk -v pkgs="$(BUILD_PKGS)" \
+		'BEGIN { n = split(pkgs, a, " "); for (i = 1; i <= n; i++) want[a[i]] = 1 } \
+		 /^[A-Za-z0-9]/ { split($$0, f, "=="); keep = (f[1] in want) } \
+		 keep' environment.lock > $(VENV)/build-requirements.txt
+	$(VENV)/bin/pip install --no-input --require-hashes --no-deps -r $(VENV)/build-requirements.txt
+	$(VENV)/bin/pip install --no-input --require-hashes --no-build-isolation -r environment.lock
+	touch $@
+
+reproduce: $(STAMP)
+	PYTHONPATH=$(CURDIR) $(VENV)/bin/snakemake --cores $(CORES) \
+		--rerun-triggers mtime params input code software-env --printshellcmds
+
+test: $(STAMP)
+	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pytest -q $(PYTEST_ARGS)
+
+lint: $(STAMP)
+	$(VENV)/bin/ruff check .
+	$(VENV)/bin/ruff format --check .
+
+$(UV):
+	$(PYTHON) -m venv $(LOCK_TOOL_VENV)
+	$(LOCK_TOOL_VENV)/bin/pip install --no-input uv==$(UV_VERSION)
+
+# An unchanged lock keeps its old mtime, so `make lock` alone does not force a venv rebuild.
+# uv keeps the existing pins where it can; to move to newer releases delete environment.lock
+# first (or add --upgrade).
+lock: $(UV)
+	@cp -p environment.lock $(LOCK_TOOL_VENV)/environment.lock.prev 2>/dev/null || true
+	$(UV) $(LOCK_ARGS)
+	@if cmp -s environment.lock $(LOCK_TOOL_VENV)/environment.lock.prev; then \
+		touch -r $(LOCK_TOOL_VENV)/environment.lock.prev environment.lock; \
+		echo "environment.lock unchanged"; \
+	fi
+
+clean:
+	rm -rf results/ .snakemake/

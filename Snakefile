@@ -1,0 +1,21 @@
+# Reproduction workflow: one include per paper; `snakemake --cores 2` (or `make reproduce`).
+#
+#   derivations --audit-->   results/<slug>/equation_audit.csv
+#   derivations --codegen--> pipeline/generated/<slug>.py   (committed; checked fresh here)
+#   scenarios   --simulate-> results/<slug>/<scenario>/*.csv
+#   published   --compare--> results/<slug>/verdicts.csv
+#   results     --figures--> results/<slug>/figures/
+#   notebooks   --execute--> reports/notebooks/<slug>.html
+#   everything  --report-->  reports/<slug>.html
+
+
+configfile: "config/config.yaml"
+
+
+include: "pipeline/rules/common.smk"
+include: "pipeline/rules/north_finding.smk"
+
+
+rule all:
+    input:
+        rules.north_finding_all.input,

@@ -1,0 +1,139 @@
+"""Code generation: SymPy expressions -> a plain numpy module.
+
+The numeric pipeline never re-types a formula that a derivation produces: it
+imports functions from ``pipeline/generated/<slug>.py``, which this module
+writes. Every generated function
+
+* takes numpy arrays (or scalars) that broadcast against each other, so it is
+  vectorised over time, table positions and Monte Carlo trials for free;
+* carries the paper's equation numbers in its docstring (``grep "eq. 47"``);
+* is printed with common-subexpression elimination, deterministically, so the
+  committed file can be compared byte for byte with a fresh regeneration.
+
+>>> import sympy as sp
+>>> x, y = sp.symbols("x y")
+>>> print(render_function(GeneratedFunction("f", (x, y), (x + y, x * y), "Sum and product.")))
+def f(x, y):
+    \"\"\"Sum and product.\"\"\"
+    out0 = x + y
+    out1 = x*y
+    return _broadcast(out0, out1)
+<BLANKLINE>
+"""
+
+from __future__ import annotations
+
+import keyword
+import os
+import tempfile
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import sympy as sp
+from sympy.printing.numpy import NumPyPrinter
+
+__all__ = ["GeneratedFunction", "render_function", "render_module", "write_module"]
+
+
+@dataclass(frozen=True)
+class GeneratedFunction:
+    """One function of a generated module.
+
+    ``args`` are the SymPy symbols in argument order; ``exprs`` one expression or
+    a tuple of them (the function then returns a tuple of broadcast arrays).
+    ``names`` optionally renames symbols to Python identifiers.
+    """
+
+    name: str
+    args: Sequence[sp.Symbol]
+    exprs: sp.Expr | Sequence[sp.Expr]
+    doc: str
+    names: Mapping[sp.Symbol, str] = field(default_factory=dict)
+
+
+class _Printer(NumPyPrinter):
+    """NumPy printer that writes ``np.`` and keeps the output stable."""
+
+    def __init__(self) -> None:
+        super().__init__({"fully_qualified_modules": True, "inline": True})
+
+    def _module_format(self, fqn: str, register: bool = True) -> str:  # noqa: D401
+        name = super()._module_format(fqn, register)
+        return name.replace("numpy.", "np.")
+
+
+def _identifier(sym: sp.Symbol, names: Mapping[sp.Symbol, str]) -> str:
+    name = names.get(sym, sym.name)
+    if not name.isidentifier() or keyword.iskeyword(name):
+        raise ValueError(
+            f"symbol {sym!r} prints as {name!r}, which is not a Python identifier; "
+            "give it a name in GeneratedFunction.names"
+        )
+    return name
+
+
+def render_function(fn: GeneratedFunction) -> str:
+    """Python source of one generated function."""
+    single = isinstance(fn.exprs, sp.Basic)
+    exprs = [fn.exprs] if single else list(fn.exprs)
+    exprs = [sp.sympify(e) for e in exprs]
+    rename = {s: sp.Symbol(_identifier(s, fn.names), real=True) for s in fn.args}
+    exprs = [e.xreplace(rename) for e in exprs]
+    free = set().union(*(e.free_symbols for e in exprs)) - set(rename.values())
+    if free:
+        raise ValueError(
+            f"function {fn.name}: expressions use symbols {sorted(map(str, free))} "
+            f"that are not arguments {[str(a) for a in fn.args]}"
+        )
+    arg_names = [rename[s].name for s in fn.args]
+    printer = _Printer()
+    subexprs, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("_x"), order="canonical")
+    lines = [f"def {fn.name}({', '.join(arg_names)}):", f'    """{fn.doc.strip()}"""']
+    for sym, sub in subexprs:
+        lines.append(f"    {sym} = {printer.doprint(sub)}")
+    outs = []
+    for i, e in enumerate(reduced):
+        lines.append(f"    out{i} = {printer.doprint(e)}")
+        outs.append(f"out{i}")
+    if single:
+        lines.append("    return out0")
+    else:
+        lines.append(f"    return _broadcast({', '.join(outs)})")
+    return "\n".join(lines) + "\n"
+
+
+_PRELUDE = '''
+import numpy as np
+
+
+def _broadcast(*outs):
+    """Broadcast the outputs of a vector function to one common shape."""
+    arrays = np.broadcast_arrays(*(np.asarray(o, dtype=float) for o in outs))
+    return tuple(np.array(a) for a in arrays)
+'''
+
+
+def render_module(functions: Sequence[GeneratedFunction], header: str) -> str:
+    """Source of a whole generated module (header docstring, prelude, functions)."""
+    parts = [f'"""{header.strip()}\n\nGENERATED FILE: do not edit; regenerate with the command above.\n"""\n']
+    parts.append("# ruff: noqa\n")
+    parts.append(_PRELUDE)
+    parts.append(f"\n__all__ = {[f.name for f in functions]!r}\n")
+    for fn in functions:
+        parts.append("\n\n" + render_function(fn))
+    return "".join(parts)
+
+
+def write_module(path: str | os.PathLike[str], source: str) -> None:
+    """Write ``source`` to ``path`` atomically (temp file in the same directory, then rename)."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            fh.write(source)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise

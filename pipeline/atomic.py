@@ -1,0 +1,53 @@
+"""Atomic writes: a reader never sees a half-written results file.
+
+Each writer puts the content in a temporary file in the destination directory
+and renames it over the target (``os.replace`` is atomic on POSIX).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+__all__ = ["write_atomic", "write_text", "write_csv", "write_json"]
+
+
+def write_atomic(path: str | os.PathLike[str], write: Callable[[Path], None]) -> Path:
+    """Call ``write(tmp_path)`` and rename the temporary file to ``path``."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    os.close(fd)
+    try:
+        write(Path(tmp))
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def write_text(path: str | os.PathLike[str], text: str) -> Path:
+    """Write a text file atomically."""
+    return write_atomic(path, lambda p: p.write_text(text, encoding="utf-8"))
+
+
+def write_csv(path: str | os.PathLike[str], frame: pd.DataFrame, columns: list[str]) -> Path:
+    """Write ``frame[columns]`` as CSV atomically; fails if a contract column is missing."""
+    missing = [c for c in columns if c not in frame.columns]
+    if missing:
+        raise ValueError(f"{path}: missing contract columns {missing}")
+    return write_atomic(
+        path, lambda p: frame[columns].to_csv(p, index=False, float_format="%.17g")
+    )
+
+
+def write_json(path: str | os.PathLike[str], data: Any) -> Path:
+    """Write JSON atomically (sorted keys, stable output)."""
+    return write_text(path, json.dumps(data, indent=2, sort_keys=True) + "\n")

@@ -1,0 +1,276 @@
+"""Turntable readings: simulated from the generated sensor model, or read from a user's CSV.
+
+A :class:`Readings` holds one averaged accelerometer and one averaged gyro
+reading per table position, for every Monte Carlo trial: arrays of shape
+``(n_trials, n_positions)``. Simulated and user readings go through the same
+estimators.
+
+Readings CSV (one row per table position)
+-----------------------------------------
+=============  =============================================================
+column         meaning
+=============  =============================================================
+tau_deg        table angle tau in degrees, [0, 360)
+axis           axis of B the sensors' sensitive axes point along: x (as
+               mounted), y (mounted on y_B, levelling methods 3, 4) or z
+               (turned by -90 deg about y_B, methods L5, A6)
+accel_m_s2     averaged accelerometer reading, m/s^2 (specific force)
+gyro_rad_s     averaged gyro reading, rad/s
+n_samples      number of samples averaged (>= 1), recorded for provenance
+=============  =============================================================
+
+Lines starting with ``#`` are comments. Local gravity, Earth rate, latitude and
+the compass heading come from the scenario file (or the CLI).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from pipeline.config import ConfigError
+from pipeline.generated import north_finding as gen
+from pipeline.north_finding.scenario import POSITION_NEEDS, Scenario, SensorErrors
+
+__all__ = [
+    "Readings",
+    "READINGS_COLUMNS",
+    "AXES",
+    "load_readings_csv",
+    "simulation_positions",
+    "simulate",
+    "layout",
+    "standard_normals",
+    "check_needs",
+]
+
+READINGS_COLUMNS = ["tau_deg", "axis", "accel_m_s2", "gyro_rad_s", "n_samples"]
+AXES = ("x", "y", "z")
+TAU_TOL_DEG = 1e-6
+
+
+@dataclass(frozen=True)
+class Readings:
+    """Averaged readings at table positions; ``accel`` and ``gyro`` are (n_trials, n_positions)."""
+
+    tau_deg: np.ndarray  # (P,)
+    axis: np.ndarray  # (P,) of 'x' | 'y' | 'z'
+    accel: np.ndarray  # (T, P) m/s^2
+    gyro: np.ndarray  # (T, P) rad/s
+    role: np.ndarray  # (P,) of '' | 'ls' | 'a2' | 'max'; '' for user readings
+
+    @property
+    def n_trials(self) -> int:
+        return self.accel.shape[0]
+
+    def index(self, axis: str, tau_deg: float, method: str) -> int:
+        """Column of the reading on ``axis`` at ``tau_deg``; ValueError naming the method if absent."""
+        diff = np.abs((self.tau_deg - tau_deg + 180.0) % 360.0 - 180.0)
+        hits = np.flatnonzero((self.axis == axis) & (diff < TAU_TOL_DEG))
+        if hits.size == 0:
+            have = sorted(set(self.tau_deg[self.axis == axis].round(6).tolist()))
+            raise ValueError(
+                f"method {method} needs a reading on axis {axis} at tau = {tau_deg:g} deg; "
+                f"the readings on axis {axis} are at {have} deg"
+            )
+        return int(hits[0])
+
+    def columns(self, axis: str, role: str | None = None) -> np.ndarray:
+        """Columns on ``axis``; with ``role``, those of that role if any are marked, else all."""
+        on_axis = self.axis == axis
+        if role is not None and np.any(on_axis & (self.role == role)):
+            on_axis &= self.role == role
+        return np.flatnonzero(on_axis)
+
+
+def check_needs(readings: Readings, methods: tuple[str, ...], a2_tau_deg: float | None) -> None:
+    """Raise ValueError if a method lacks a table position it needs (before any compute)."""
+    for method in methods:
+        for axis, pos in POSITION_NEEDS[method]:
+            if isinstance(pos, float):
+                readings.index(axis, pos, method)
+            elif pos == "ls":
+                n = readings.columns(axis, "ls").size
+                if n < 3:
+                    raise ValueError(
+                        f"method {method} (least squares) needs at least 3 table positions on axis "
+                        f"{axis}; the readings have {n}"
+                    )
+            elif pos == "a2":
+                if a2_tau_deg is None:
+                    if readings.columns(axis, "a2").size == 0:
+                        raise ValueError(f"method {method} needs a2_tau_deg (the table angle it uses)")
+                else:
+                    readings.index(axis, a2_tau_deg, method)
+            elif readings.columns(axis).size == 0:
+                raise ValueError(f"method {method} needs at least one reading on axis {axis}")
+
+
+def load_readings_csv(path: str | Path) -> Readings:
+    """Read a user's readings CSV (format in the module docstring); errors name row and column."""
+    path = Path(path)
+    try:
+        frame = pd.read_csv(path, comment="#", skipinitialspace=True)
+    except (OSError, pd.errors.ParserError, pd.errors.EmptyDataError) as exc:
+        raise ConfigError(f"{path}: cannot read readings CSV: {exc}") from exc
+    missing = [c for c in READINGS_COLUMNS if c not in frame.columns]
+    if missing:
+        raise ConfigError(
+            f"{path}: missing columns {missing}; a readings CSV has columns {READINGS_COLUMNS}"
+        )
+    extra = [c for c in frame.columns if c not in READINGS_COLUMNS]
+    if extra:
+        raise ConfigError(f"{path}: unknown columns {extra}; allowed: {READINGS_COLUMNS}")
+    if frame.empty:
+        raise ConfigError(f"{path}: no readings")
+    for col in ("tau_deg", "accel_m_s2", "gyro_rad_s", "n_samples"):
+        values = pd.to_numeric(frame[col], errors="coerce")
+        bad = values.isna() | ~np.isfinite(values)
+        if bad.any():
+            row = int(np.flatnonzero(bad)[0])
+            raise ConfigError(
+                f"{path}: row {row + 1}, column {col} = {frame[col].iloc[row]!r}: must be a finite number"
+            )
+        frame[col] = values
+    bad_tau = (frame["tau_deg"] < 0) | (frame["tau_deg"] >= 360)
+    if bad_tau.any():
+        row = int(np.flatnonzero(bad_tau)[0])
+        raise ConfigError(
+            f"{path}: row {row + 1}, column tau_deg = {frame['tau_deg'].iloc[row]}: allowed 0 <= tau_deg < 360"
+        )
+    bad_axis = ~frame["axis"].isin(AXES)
+    if bad_axis.any():
+        row = int(np.flatnonzero(bad_axis)[0])
+        raise ConfigError(
+            f"{path}: row {row + 1}, column axis = {frame['axis'].iloc[row]!r}: allowed {list(AXES)}"
+        )
+    if (frame["n_samples"] < 1).any():
+        row = int(np.flatnonzero(frame["n_samples"] < 1)[0])
+        raise ConfigError(f"{path}: row {row + 1}, column n_samples: must be >= 1")
+    return Readings(
+        tau_deg=frame["tau_deg"].to_numpy(float),
+        axis=frame["axis"].to_numpy(str),
+        accel=frame["accel_m_s2"].to_numpy(float)[None, :],
+        gyro=frame["gyro_rad_s"].to_numpy(float)[None, :],
+        role=np.full(len(frame), "", dtype="<U3"),
+    )
+
+
+def simulation_positions(sc: Scenario) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Table positions (tau_deg, axis, role) a simulated scenario reads.
+
+    Fixed positions 0/90/180/270 on x and y, z once, the least-squares set on x and
+    y, the method-2 angle, and the method-3 maximum (tau* of eq. 52 or a scan).
+    """
+    taus: list[float] = []
+    axes: list[str] = []
+    roles: list[str] = []
+
+    def add(axis: str, tau: float, role: str = "") -> None:
+        taus.append(float(tau) % 360.0)
+        axes.append(axis)
+        roles.append(role)
+
+    for axis in ("x", "y"):
+        for tau in (0.0, 90.0, 180.0, 270.0):
+            add(axis, tau)
+    add("z", 0.0)
+    for axis in ("x", "y"):
+        for tau in sc.ls_positions_deg():
+            add(axis, tau, "ls")
+    add("x", sc.table["a2_tau_deg"], "a2")
+    ms = sc.table["max_search"]
+    if ms["mode"] == "analytic":
+        t = sc.truth
+        tau_star, _ = gen.a3_peak(sc.omega_ie, sc.lat, t["psi"], t["theta"], t["phi"])
+        add("x", np.rad2deg(tau_star), "max")
+    else:
+        for tau in np.arange(0.0, 360.0, ms["step_deg"]):
+            add("x", tau, "max")
+    return np.array(taus), np.array(axes), np.array(roles, dtype="<U3")
+
+
+def layout(sc: Scenario) -> Readings:
+    """The positions of a simulated scenario with zero readings (to check method needs)."""
+    tau_deg, axis, role = simulation_positions(sc)
+    zeros = np.zeros((1, tau_deg.size))
+    return Readings(tau_deg=tau_deg, axis=axis, accel=zeros, gyro=zeros, role=role)
+
+
+def _true_vectors(sc: Scenario, tau_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Specific force and angular rate in B, shape (3, P), from the generated model."""
+    t = sc.truth
+    tau = np.deg2rad(tau_deg)
+    tb = sc.table
+    f_b = np.stack(
+        gen.specific_force_b(
+            sc.g,
+            sc.omega_ie,
+            sc.lat,
+            t["psi"],
+            t["theta"],
+            t["phi"],
+            tau,
+            tb["lever_arm_m"],
+            tb["rate_rad_s"],
+            tb["accel_rad_s2"],
+        )
+    )
+    w_b = np.stack(gen.angular_rate_b(sc.omega_ie, sc.lat, t["psi"], t["theta"], t["phi"], tau, tb["rate_rad_s"]))
+    return f_b, w_b
+
+
+def _sense(vec_b: np.ndarray, axis: np.ndarray, err: SensorErrors) -> np.ndarray:
+    """Noise-free reading of the single sensor on each position's axis (row of eq. 18 / 39)."""
+    idx = {a: i for i, a in enumerate(AXES)}
+    out = np.empty(vec_b.shape[1])
+    for a in AXES:
+        cols = axis == a
+        others = [o for o in AXES if o != a]
+        out[cols] = (
+            err.scale * vec_b[idx[a], cols]
+            + sum(err.misalignment[a + o] * vec_b[idx[o], cols] for o in others)
+            + err.bias
+        )
+    return out
+
+
+def standard_normals(seed: int, scenario_key: int, n_trials: int, n_positions: int) -> np.ndarray:
+    """Standard normal draws of shape (n_trials, 2, n_positions), one stream per trial.
+
+    Trial k uses ``SeedSequence([seed, scenario_key, k])``: its numbers do not depend on
+    how many trials run, in which order, or on how many cores.
+    """
+    out = np.empty((n_trials, 2, n_positions))
+    for k in range(n_trials):
+        rng = np.random.default_rng(np.random.SeedSequence([seed, scenario_key, k]))
+        out[k] = rng.standard_normal((2, n_positions))
+    return out
+
+
+def simulate(
+    sc: Scenario,
+    accel: SensorErrors,
+    gyro: SensorErrors,
+    normals: np.ndarray | None,
+    n_samples: int,
+) -> Readings:
+    """Averaged readings for every trial: noise-free model plus sigma/sqrt(N) times ``normals``.
+
+    ``normals`` is (T, 2, P) from :func:`standard_normals`, or None for one noise-free trial.
+    """
+    tau_deg, axis, role = simulation_positions(sc)
+    f_b, w_b = _true_vectors(sc, tau_deg)
+    acc0 = _sense(f_b, axis, accel)
+    gyr0 = _sense(w_b, axis, gyro)
+    if normals is None:
+        acc, gyr = acc0[None, :], gyr0[None, :]
+    else:
+        if normals.shape[1:] != (2, tau_deg.size):
+            raise ValueError(f"normals must have shape (T, 2, {tau_deg.size}), got {normals.shape}")
+        acc = acc0 + accel.sigma / np.sqrt(n_samples) * normals[:, 0, :]
+        gyr = gyr0 + gyro.sigma / np.sqrt(n_samples) * normals[:, 1, :]
+    return Readings(tau_deg=tau_deg, axis=axis, accel=acc, gyro=gyr, role=role)

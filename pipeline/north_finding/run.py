@@ -1,0 +1,325 @@
+"""Run one north-finding scenario and write its results directory.
+
+Writes, under ``results/north_finding/<scenario>/`` (columns in pipeline/columns.py):
+
+* ``estimates.csv``: the ideal sensor and the real sensor without noise
+  (deterministic error propagation), one row per method and quantity;
+* ``mc_trials.csv`` and ``mc_summary.csv``: the noisy real sensor, Monte Carlo;
+* ``error_budget.csv``: the noise-free error with one error source at a time, and
+  the Monte Carlo standard deviation as the 'noise' source;
+* ``sensitivity.csv``: Monte Carlo RMS error against the averaging count N;
+* ``provenance.json``: code version, config hash, packages, seeds.
+
+Ideal sensor: no misalignment and no noise; the scale factor and bias are those of
+the real sensor for the methods that estimate them (L5, A4, A5, A6), and 1 and 0
+for the others (the paper's Tables 1, 2, 5 print 0 % for the ideal sensor, and
+Tables 6-8 recover the nominal S and b).
+
+Usage: ``python -m pipeline.north_finding.run --scenario config/scenarios/north_finding/paper.yaml
+--out-dir results/north_finding/paper``
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from pipeline import columns as col
+from pipeline.atomic import write_csv, write_json
+from pipeline.north_finding import estimators as est
+from pipeline.north_finding import readings as rd
+from pipeline.north_finding.scenario import ROOT, Scenario, load_scenario
+
+__all__ = ["run_scenario", "truth_values", "estimates_frame", "main"]
+
+CALIBRATION_METHODS = ("L5", "A4", "A5", "A6")
+ALL_SOURCES = ("scale_factor", "misalignment", "bias", "noise")
+
+
+def scenario_key(name: str) -> int:
+    """Stable 32-bit key of a scenario name, mixed into every seed."""
+    return int.from_bytes(hashlib.sha256(name.encode()).digest()[:4], "little")
+
+
+def truth_values(sc: Scenario, off: tuple[str, ...] = ()) -> dict[str, float]:
+    """True value of every quantity for the sensor with the error sources ``off`` switched off.
+
+    NaN where unknown (e.g. a readings scenario without a truth block).
+    """
+    t = sc.truth or {}
+    out = {q: np.nan for q in col.QUANTITIES}
+    if t:
+        out.update(
+            phi_deg=np.rad2deg(t["phi"]),
+            theta_deg=np.rad2deg(t["theta"]),
+            psi_deg=np.rad2deg(t["psi"]) % 360.0,
+        )
+    if sc.accel is not None:
+        acc = sc.accel.without(*off)
+        out.update(acc_bias_ug=acc.bias / sc.g * 1e6, acc_scale=acc.scale, acc_scale_approx=acc.scale)
+    if sc.gyro is not None:
+        gyr = sc.gyro.without(*off)
+        out.update(gyro_bias_rad_s=gyr.bias, gyro_scale=gyr.scale, gyro_scale_approx=gyr.scale)
+    return out
+
+
+def _difference(estimate: np.ndarray, truth: float, quantity: str) -> np.ndarray:
+    """estimate - truth, wrapped to (-180, 180] deg for the azimuth."""
+    diff = np.asarray(estimate, dtype=float) - truth
+    if quantity == "psi_deg":
+        diff = (diff + 180.0) % 360.0 - 180.0
+    return diff
+
+
+def _error_pct(estimate: np.ndarray, truth: float, quantity: str) -> np.ndarray:
+    """Signed percent error 100 (estimate - truth) / |truth|; NaN where truth is 0 or unknown."""
+    diff = _difference(estimate, truth, quantity)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return 100.0 * diff / abs(truth) if truth != 0 else np.full_like(diff, np.nan, dtype=float)
+
+
+def _ordered(estimates: est.Estimates) -> list[tuple[str, str]]:
+    return [
+        (m, q) for m in col.METHODS for q in col.METHOD_QUANTITIES[m] if (m, q) in estimates
+    ]
+
+
+def estimates_frame(estimates: est.Estimates, truth: dict[str, float], sensor: str) -> pd.DataFrame:
+    """One row per (method, quantity) of a single-trial run."""
+    rows = []
+    for m, q in _ordered(estimates):
+        value = float(estimates[m, q][0])
+        rows.append(
+            {
+                "sensor": sensor,
+                "method": m,
+                "quantity": q,
+                "truth": truth[q],
+                "estimate": value,
+                "error_pct": float(_error_pct(value, truth[q], q)),
+            }
+        )
+    return pd.DataFrame(rows, columns=col.ESTIMATE_COLUMNS)
+
+
+def trials_frame(estimates: est.Estimates, truth: dict[str, float]) -> pd.DataFrame:
+    """Long table of every Monte Carlo trial (vectorised, no loop over trials)."""
+    parts = []
+    for m, q in _ordered(estimates):
+        v = estimates[m, q]
+        parts.append(
+            pd.DataFrame(
+                {
+                    "trial": np.arange(v.size),
+                    "method": m,
+                    "quantity": q,
+                    "truth": truth[q],
+                    "estimate": v,
+                    "error_pct": _error_pct(v, truth[q], q),
+                }
+            )
+        )
+    return pd.concat(parts, ignore_index=True)[col.MC_TRIAL_COLUMNS]
+
+
+def summary_frame(trials: pd.DataFrame) -> pd.DataFrame:
+    """Mean, std and 5/50/95 % quantiles of every estimate over the trials."""
+    grouped = trials.groupby(["method", "quantity"], sort=False)["estimate"]
+    out = pd.DataFrame(
+        {
+            "truth": trials.groupby(["method", "quantity"], sort=False)["truth"].first(),
+            "mean": grouped.mean(),
+            "std": grouped.std(ddof=1),
+            "p05": grouped.quantile(0.05),
+            "p50": grouped.quantile(0.50),
+            "p95": grouped.quantile(0.95),
+            "n_trials": grouped.size(),
+        }
+    ).reset_index()
+    return out[col.MC_SUMMARY_COLUMNS]
+
+
+class _Runner:
+    """Runs the estimators on simulated readings with chosen error sources."""
+
+    def __init__(self, sc: Scenario):
+        self.sc = sc
+        self.site = est.Site(sc.lat, sc.g, sc.omega_ie)
+        t = sc.truth
+        self.truth_level = (t["theta"], t["phi"])
+        self.psi = t["psi"]
+
+    def run(self, off: tuple[str, ...], normals: np.ndarray | None, n_samples: int, methods=None):
+        sc = self.sc
+        methods = methods or sc.methods
+        readings = rd.simulate(sc, sc.accel.without(*off), sc.gyro.without(*off), normals, n_samples)
+        prior = np.full(readings.n_trials, self.psi + sc.compass_offset)
+        return est.estimate_all(
+            readings,
+            self.site,
+            methods,
+            sc.level_source,
+            self.truth_level,
+            prior,
+            sc.table["a2_tau_deg"],
+        )
+
+
+def _simulated(sc: Scenario, log) -> dict[str, pd.DataFrame]:
+    truth = truth_values(sc)
+    runner = _Runner(sc)
+    calib = tuple(m for m in sc.methods if m in CALIBRATION_METHODS)
+    attitude = tuple(m for m in sc.methods if m not in CALIBRATION_METHODS)
+    # ideal: perfect sensor for attitude methods, nominal S and b for calibration methods
+    ideal: est.Estimates = {}
+    if attitude:
+        ideal.update(runner.run(ALL_SOURCES, None, 1, attitude))
+    if calib:
+        ideal.update(runner.run(("misalignment", "noise"), None, 1, calib))
+    # truth of the ideal runs: the attitude is the same; S and b are the nominal ones
+    real0 = runner.run(("noise",), None, 1)
+    estimates = pd.concat(
+        [estimates_frame(ideal, truth, "ideal"), estimates_frame(real0, truth, "real")],
+        ignore_index=True,
+    )
+    log(f"{sc.name}: ideal and noise-free real runs done")
+
+    n_pos = rd.simulation_positions(sc)[0].size
+    key = scenario_key(sc.name)
+    t0 = time.perf_counter()
+    normals = rd.standard_normals(sc.seed, key, sc.n_trials, n_pos)
+    mc = runner.run((), normals, sc.n_samples)
+    trials = trials_frame(mc, truth)
+    summary = summary_frame(trials)
+    log(f"{sc.name}: Monte Carlo {sc.n_trials} trials in {time.perf_counter() - t0:.2f} s")
+
+    budget_rows = []
+    for source in ("scale_factor", "misalignment", "bias"):
+        others = tuple(s for s in ALL_SOURCES if s != source)
+        one = runner.run(others, None, 1)
+        truth_one = truth_values(sc, others)
+        for (m, q), v in one.items():
+            budget_rows.append((m, q, source, float(_difference(v[0], truth_one[q], q))))
+    for (m, q), v in real0.items():
+        budget_rows.append((m, q, "all_deterministic", float(_difference(v[0], truth[q], q))))
+    for (m, q), v in mc.items():
+        budget_rows.append((m, q, "noise", float(np.std(v, ddof=1))))
+    budget = pd.DataFrame(budget_rows, columns=["method", "quantity", "source", "error"])
+    budget["error_pct"] = 100.0 * budget["error"] / budget["quantity"].map(truth).abs()
+
+    sens_rows = []
+    if sc.sensitivity:
+        n_sens = sc.sensitivity["n_trials"]
+        z = rd.standard_normals(sc.seed, key, n_sens, n_pos)
+        for i, n_avg in enumerate(sc.sensitivity["n_avg"]):
+            out = runner.run((), z, int(n_avg))
+            for (m, q), v in out.items():
+                err = _error_pct(v, truth[q], q)
+                diff = _difference(v, truth[q], q)
+                sens_rows.append(
+                    {
+                        "n_avg": int(n_avg),
+                        "method": m,
+                        "quantity": q,
+                        "truth": truth[q],
+                        "rms_error": float(np.sqrt(np.mean(diff**2))),
+                        "rms_error_pct": float(np.sqrt(np.mean(err**2))),
+                        "n_trials": n_sens,
+                    }
+                )
+            log(f"{sc.name}: sensitivity {i + 1}/{len(sc.sensitivity['n_avg'])} (N = {n_avg})")
+    sensitivity = pd.DataFrame(sens_rows, columns=col.SENSITIVITY_COLUMNS)
+    return {
+        "estimates": estimates,
+        "mc_trials": trials,
+        "mc_summary": summary,
+        "error_budget": budget,
+        "sensitivity": sensitivity,
+    }
+
+
+def _readings(sc: Scenario, log) -> dict[str, pd.DataFrame]:
+    truth = truth_values(sc)
+    readings = rd.load_readings_csv(sc.readings_csv)
+    a2_tau = sc.raw.get("a2_tau_deg")
+    rd.check_needs(readings, sc.methods, a2_tau)
+    site = est.Site(sc.lat, sc.g, sc.omega_ie)
+    level = (sc.truth["theta"], sc.truth["phi"]) if sc.truth else None
+    out = est.estimate_all(
+        readings, site, sc.methods, sc.level_source, level, np.array([sc.compass_heading]), a2_tau
+    )
+    log(f"{sc.name}: estimated from {sc.readings_csv.name} ({readings.tau_deg.size} positions)")
+    return {
+        "estimates": estimates_frame(out, truth, "real"),
+        "mc_trials": pd.DataFrame(columns=col.MC_TRIAL_COLUMNS),
+        "mc_summary": pd.DataFrame(columns=col.MC_SUMMARY_COLUMNS),
+        "error_budget": pd.DataFrame(columns=col.ERROR_BUDGET_COLUMNS),
+        "sensitivity": pd.DataFrame(columns=col.SENSITIVITY_COLUMNS),
+    }
+
+
+OUTPUTS = {
+    "estimates": ("estimates.csv", col.ESTIMATE_COLUMNS),
+    "mc_trials": ("mc_trials.csv", col.MC_TRIAL_COLUMNS),
+    "mc_summary": ("mc_summary.csv", col.MC_SUMMARY_COLUMNS),
+    "error_budget": ("error_budget.csv", col.ERROR_BUDGET_COLUMNS),
+    "sensitivity": ("sensitivity.csv", col.SENSITIVITY_COLUMNS),
+}
+
+
+def run_scenario(scenario: Scenario | str | Path, out_dir: str | Path, log=print) -> dict[str, Path]:
+    """Run a scenario (validated first) and write its results atomically into ``out_dir``."""
+    from pipeline.provenance import provenance
+
+    sc = scenario if isinstance(scenario, Scenario) else load_scenario(scenario)
+    if sc.kind == "simulated":
+        # every method's table positions exist by construction; check anyway before compute
+        rd.check_needs(rd.layout(sc), sc.methods, sc.table["a2_tau_deg"])
+    frames = _simulated(sc, log) if sc.kind == "simulated" else _readings(sc, log)
+    out_dir = Path(out_dir)
+    written = {}
+    for key, (name, columns) in OUTPUTS.items():
+        written[key] = write_csv(out_dir / name, frames[key], columns)
+    prov = provenance(
+        scenario=sc.name,
+        scenario_file=_relative(sc.path),
+        config_sha256=sc.config_sha256,
+        seed=sc.seed,
+        seed_scheme="SeedSequence([seed, scenario_key, trial])",
+        scenario_key=scenario_key(sc.name),
+        n_avg=sc.n_samples,
+        n_trials=sc.n_trials,
+    )
+    written["provenance"] = write_json(out_dir / "provenance.json", prov)
+    return written
+
+
+def _relative(path: Path) -> str:
+    try:
+        return str(path.resolve().relative_to(ROOT))
+    except ValueError:
+        return str(path)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--scenario", required=True, type=Path, help="scenario YAML file")
+    parser.add_argument("--out-dir", required=True, type=Path, help="results directory to write")
+    args = parser.parse_args(argv)
+    try:
+        sc = load_scenario(args.scenario)
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    run_scenario(sc, args.out_dir, log=lambda m: print(m, file=sys.stderr, flush=True))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,196 @@
+"""Scenario files of the north-finding paper: load, validate, and check method needs.
+
+A scenario is ``config/scenarios/north_finding/<name>.yaml`` validated against
+``config/schemas/north_finding_scenario.schema.json``; then semantic checks run
+(table positions each method needs, the readings CSV) so that bad input fails
+with a clear message before any compute starts.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from pipeline.config import ConfigError, dotted_get, load_schema, load_yaml, sha256_of, validate
+
+__all__ = ["Scenario", "load_scenario", "build_scenario", "POSITION_NEEDS", "ROOT"]
+
+ROOT = Path(__file__).resolve().parents[2]
+ARCSEC = np.pi / (180 * 3600)
+DEG_PER_H = np.pi / (180 * 3600)  # 1 deg/h in rad/s
+MICRO_G = 1e-6
+
+# Table positions (axis, tau_deg) each method reads; "ls" = the least-squares set,
+# "a2" = the method-2 angle, "max" = the method-3 maximum search.
+POSITION_NEEDS: dict[str, tuple[tuple[str, float | str], ...]] = {
+    "L1": (("x", 0.0), ("x", 90.0), ("x", 180.0), ("x", 270.0)),
+    "L2": (("x", "ls"),),
+    "L3": (("y", 0.0), ("y", 90.0), ("y", 180.0), ("y", 270.0)),
+    "L4": (("y", "ls"),),
+    "L5": (("x", 0.0), ("x", 90.0), ("x", 180.0), ("z", "any")),
+    "A1c1": (("x", 0.0), ("x", 180.0)),
+    "A1c2": (("x", 90.0), ("x", 270.0)),
+    "A2": (("x", "a2"),),
+    "A3": (("x", "max"),),
+    "A4": (("x", 0.0), ("x", 90.0), ("x", 180.0)),
+    "A5": (("x", 0.0), ("x", 90.0), ("x", 180.0)),
+    "A6": (("x", 0.0), ("x", 90.0), ("x", 180.0), ("z", "any")),
+}
+MIN_LS_POSITIONS = 3  # eqs. 21, 26: "n >= 3"
+
+
+@dataclass(frozen=True)
+class SensorErrors:
+    """Errors of the single real sensor, in SI units (rad, m/s^2 or rad/s)."""
+
+    scale: float  # S = 1 + sf
+    misalignment: dict[str, float]  # rad, keys xy, xz, yx, yz, zx, zy
+    bias: float  # m/s^2 (accelerometer) or rad/s (gyro)
+    sigma: float  # per-sample noise sigma, m/s^2 or rad/s
+
+    def without(self, *sources: str) -> SensorErrors:
+        """A copy with the named error sources switched off (scale_factor, misalignment, bias, noise)."""
+        return SensorErrors(
+            scale=1.0 if "scale_factor" in sources else self.scale,
+            misalignment={k: 0.0 for k in self.misalignment}
+            if "misalignment" in sources
+            else dict(self.misalignment),
+            bias=0.0 if "bias" in sources else self.bias,
+            sigma=0.0 if "noise" in sources else self.sigma,
+        )
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """A validated scenario with values converted to SI units and radians."""
+
+    name: str
+    path: Path
+    raw: dict[str, Any]
+    kind: str  # simulated | readings
+    lat: float
+    g: float
+    omega_ie: float
+    methods: tuple[str, ...]
+    level_source: str
+    compass_offset: float | None
+    compass_heading: float | None
+    truth: dict[str, float] | None  # psi, theta, phi in rad
+    table: dict[str, Any] | None
+    accel: SensorErrors | None
+    gyro: SensorErrors | None
+    n_samples: int | None
+    n_trials: int | None
+    seed: int | None
+    sensitivity: dict[str, Any] | None
+    readings_csv: Path | None
+
+    @property
+    def config_sha256(self) -> str:
+        return sha256_of(self.raw)
+
+    def ls_positions_deg(self) -> list[float]:
+        return [float(x) for x in self.table["ls_positions_deg"]] if self.table else []
+
+    def decisions(self) -> list[dict[str, Any]]:
+        """Each decision with the value found at its field (ConfigError if the field is missing)."""
+        return [
+            {**d, "value": dotted_get(self.raw, d["field"], self.path)}
+            for d in self.raw.get("decisions", [])
+        ]
+
+
+def _sensor(raw: dict[str, Any], bias_unit: float, nominal: float) -> SensorErrors:
+    return SensorErrors(
+        scale=1.0 + raw["scale_factor_ppm"] * 1e-6,
+        misalignment={k: v * ARCSEC for k, v in raw["misalignment_arcsec"].items()},
+        bias=raw["bias"] * bias_unit,
+        sigma=raw["noise_sigma_frac"] * nominal,
+    )
+
+
+def load_scenario(path: str | Path) -> Scenario:
+    """Load and validate one scenario file; ConfigError names file, field, value and range."""
+    path = Path(path)
+    return build_scenario(load_yaml(path), path)
+
+
+def build_scenario(raw: Any, path: Path, base: Path = ROOT) -> Scenario:
+    """Validate a parsed scenario (from a file or the CLI); ``path`` names it in errors.
+
+    ``readings_csv`` is resolved relative to ``base`` (the repository root for files).
+    """
+    if not isinstance(raw, dict):
+        raise ConfigError(f"{path}: a scenario must be a mapping, got {type(raw).__name__}")
+    validate(raw, load_schema("north_finding_scenario"), path)
+    site = raw["site"]
+    lat = np.deg2rad(site["lat_deg"])
+    g, omega_ie = float(site["g_m_s2"]), float(site["omega_ie_rad_s"])
+    compass = raw["compass"]
+    if raw["type"] == "simulated" and "offset_deg" not in compass:
+        raise ConfigError(f"{path}: compass.offset_deg is required for a simulated scenario")
+    if raw["type"] == "readings" and "heading_deg" not in compass:
+        raise ConfigError(
+            f"{path}: compass.heading_deg (the coarse heading of your compass, deg) is required "
+            "for a readings scenario"
+        )
+    truth = raw.get("truth")
+    sc = Scenario(
+        name=path.stem,
+        path=path,
+        raw=raw,
+        kind=raw["type"],
+        lat=float(lat),
+        g=g,
+        omega_ie=omega_ie,
+        methods=tuple(raw["methods"]),
+        level_source=raw["level_source"],
+        compass_offset=np.deg2rad(compass["offset_deg"]) if "offset_deg" in compass else None,
+        compass_heading=np.deg2rad(compass["heading_deg"]) if "heading_deg" in compass else None,
+        truth={k.removesuffix("_deg"): float(np.deg2rad(v)) for k, v in truth.items()}
+        if truth
+        else None,
+        table=raw.get("table"),
+        accel=_sensor(raw["accelerometer"], MICRO_G * g, g) if "accelerometer" in raw else None,
+        gyro=_sensor(raw["gyro"], DEG_PER_H, omega_ie) if "gyro" in raw else None,
+        n_samples=raw.get("averaging", {}).get("n_samples"),
+        n_trials=raw.get("monte_carlo", {}).get("n_trials"),
+        seed=raw.get("monte_carlo", {}).get("seed"),
+        sensitivity=raw.get("sensitivity"),
+        readings_csv=(base / raw["readings_csv"]) if "readings_csv" in raw else None,
+    )
+    _check_semantics(sc)
+    sc.decisions()  # every decision names a real field
+    return sc
+
+
+def _check_semantics(sc: Scenario) -> None:
+    if sc.level_source != "truth" and sc.level_source not in sc.methods:
+        raise ConfigError(
+            f"{sc.path}: level_source = {sc.level_source!r} must be 'truth' or one of the "
+            f"levelling methods listed in methods {list(sc.methods)}"
+        )
+    if sc.level_source == "truth" and sc.truth is None and any(m.startswith("A") for m in sc.methods):
+        raise ConfigError(
+            f"{sc.path}: level_source = 'truth' needs a 'truth' block; give one or use a levelling "
+            "method (L1..L4)"
+        )
+    if sc.kind == "simulated":
+        n_ls = len(sc.ls_positions_deg())
+        for m in ("L2", "L4"):
+            if m in sc.methods and n_ls < MIN_LS_POSITIONS:
+                raise ConfigError(
+                    f"{sc.path}: table.ls_positions_deg has {n_ls} positions, but method {m} "
+                    f"(least squares, eqs. 21/26) needs at least {MIN_LS_POSITIONS}"
+                )
+        ms = sc.table["max_search"]
+        if ms["mode"] == "scan" and "step_deg" not in ms:
+            raise ConfigError(f"{sc.path}: table.max_search.step_deg is required when mode = 'scan'")
+    else:
+        if "A2" in sc.methods and "a2_tau_deg" not in sc.raw:
+            raise ConfigError(f"{sc.path}: a2_tau_deg is required when method A2 runs on readings")
+        if sc.readings_csv is None or not sc.readings_csv.is_file():
+            raise ConfigError(f"{sc.path}: readings_csv = {sc.raw.get('readings_csv')!r}: file not found")

@@ -1,0 +1,40 @@
+"""Helpers the north_finding Snakemake rules call at parse time (scenario discovery, validation)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from pipeline.north_finding.scenario import load_scenario
+
+__all__ = ["DERIVATION_CODE", "SIMULATION_CODE", "scenarios", "validate_scenarios"]
+
+DERIVATION_CODE = [
+    "derivations/frames.py",
+    "derivations/codegen.py",
+    "derivations/north_finding/symbols.py",
+    "derivations/north_finding/sensors.py",
+    "derivations/north_finding/leveling.py",
+    "derivations/north_finding/azimuth.py",
+    "derivations/north_finding/generate.py",
+]
+SIMULATION_CODE = [
+    "pipeline/generated/north_finding.py",
+    "pipeline/north_finding/scenario.py",
+    "pipeline/north_finding/readings.py",
+    "pipeline/north_finding/estimators.py",
+    "pipeline/north_finding/run.py",
+]
+
+
+def scenarios(directory: str | Path) -> list[str]:
+    """Names of every scenario file ``<directory>/<name>.yaml`` (the workflow runs them all)."""
+    names = sorted(p.stem for p in Path(directory).glob("*.yaml"))
+    if not names:
+        raise ValueError(f"{directory}: no scenario files (*.yaml) found")
+    return names
+
+
+def validate_scenarios(names: list[str], directory: str | Path = "config/scenarios/north_finding") -> None:
+    """Load and validate every scenario; the first bad file stops the workflow before any job."""
+    for name in names:
+        load_scenario(Path(directory) / f"{name}.yaml")
