@@ -64,7 +64,12 @@ class AuditRow:
     note: str
 
     def as_dict(self) -> dict[str, str]:
-        return {"equation": self.equation, "status": self.status, "residual": self.residual, "note": self.note}
+        return {
+            "equation": self.equation,
+            "status": self.status,
+            "residual": self.residual,
+            "note": self.note,
+        }
 
 
 def _elements(obj: Any) -> list[sp.Expr]:
@@ -123,7 +128,13 @@ def run_check(check: Check) -> AuditRow:
     # scale: the sum of the magnitudes of the terms on both sides, so that cancelling
     # terms of size ~1 that leave ~1e-16 count as zero
     scales = [
-        sum((sp.Abs(term) for term in sp.Add.make_args(sp.expand(p)) + sp.Add.make_args(sp.expand(d))), sp.S.Zero)
+        sum(
+            (
+                sp.Abs(term)
+                for term in sp.Add.make_args(sp.expand(p)) + sp.Add.make_args(sp.expand(d))
+            ),
+            sp.S.Zero,
+        )
         for p, d in zip(printed, derived, strict=True)
     ]
     if all(r == 0 for r in raw):

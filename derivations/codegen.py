@@ -25,10 +25,8 @@ from __future__ import annotations
 
 import keyword
 import os
-import tempfile
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
@@ -116,7 +114,9 @@ def _broadcast(*outs):
 
 def render_module(functions: Sequence[GeneratedFunction], header: str) -> str:
     """Source of a whole generated module (header docstring, prelude, functions)."""
-    parts = [f'"""{header.strip()}\n\nGENERATED FILE: do not edit; regenerate with the command above.\n"""\n']
+    parts = [
+        f'"""{header.strip()}\n\nGENERATED FILE: do not edit; regenerate with the command above.\n"""\n'
+    ]
     parts.append("# ruff: noqa\n")
     parts.append(_PRELUDE)
     parts.append(f"\n__all__ = {[f.name for f in functions]!r}\n")
@@ -127,13 +127,6 @@ def render_module(functions: Sequence[GeneratedFunction], header: str) -> str:
 
 def write_module(path: str | os.PathLike[str], source: str) -> None:
     """Write ``source`` to ``path`` atomically (temp file in the same directory, then rename)."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(source)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    from pipeline.atomic import write_text
+
+    write_text(path, source)

@@ -15,17 +15,29 @@ from typing import Any
 
 import pandas as pd
 
-__all__ = ["write_atomic", "write_text", "write_csv", "write_json"]
+__all__ = ["write_atomic", "write_text", "write_bytes", "write_csv", "write_json"]
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
 
 
 def write_atomic(path: str | os.PathLike[str], write: Callable[[Path], None]) -> Path:
-    """Call ``write(tmp_path)`` and rename the temporary file to ``path``."""
+    """Call ``write(tmp_path)``, fsync, and rename the temporary file to ``path``.
+
+    The file gets the permissions a plain ``open(path, "w")`` would (0666 minus umask).
+    """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
     os.close(fd)
     try:
         write(Path(tmp))
+        with open(tmp, "rb") as fh:
+            os.fsync(fh.fileno())
+        os.chmod(tmp, 0o666 & ~_umask())
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
@@ -38,13 +50,19 @@ def write_text(path: str | os.PathLike[str], text: str) -> Path:
     return write_atomic(path, lambda p: p.write_text(text, encoding="utf-8"))
 
 
+def write_bytes(path: str | os.PathLike[str], data: bytes) -> Path:
+    """Write a binary file atomically."""
+    return write_atomic(path, lambda p: p.write_bytes(data))
+
+
 def write_csv(path: str | os.PathLike[str], frame: pd.DataFrame, columns: list[str]) -> Path:
     """Write ``frame[columns]`` as CSV atomically; fails if a contract column is missing."""
     missing = [c for c in columns if c not in frame.columns]
     if missing:
         raise ValueError(f"{path}: missing contract columns {missing}")
     return write_atomic(
-        path, lambda p: frame[columns].to_csv(p, index=False, float_format="%.17g")
+        path,
+        lambda p: frame[columns].to_csv(p, index=False, float_format="%.17g", lineterminator="\n"),
     )
 
 

@@ -36,7 +36,15 @@ ERROR_SOURCES = ("scale_factor", "misalignment", "bias", "noise", "all_determini
 
 # results/north_finding/<scenario>/sensitivity.csv: Monte Carlo spread against the
 # number of samples averaged per table position.
-SENSITIVITY_COLUMNS = ["n_avg", "method", "quantity", "truth", "rms_error", "rms_error_pct", "n_trials"]
+SENSITIVITY_COLUMNS = [
+    "n_avg",
+    "method",
+    "quantity",
+    "truth",
+    "rms_error",
+    "rms_error_pct",
+    "n_trials",
+]
 
 LEVELING_METHODS = ("L1", "L2", "L3", "L4", "L5")
 AZIMUTH_METHODS = ("A1c1", "A1c2", "A2", "A3", "A4", "A5", "A6")

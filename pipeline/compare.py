@@ -45,7 +45,8 @@ claim (a predicate over our results; ``published`` = the expected answer)
       sqrt(mean(error_pct^2)) over the trials of ``mc_trials.csv``, among the named methods;
     * close: the RMS of a and b differ by at most rel_tol x max(rms_a, rms_b);
     * dominant_source: in ``error_budget.csv`` the source (scale_factor, misalignment, bias,
-      noise) with the largest |error| for the method and quantity.
+      noise, or the subset the predicate lists in ``sources``) with the largest |error| for
+      the method and quantity.
 
     ``upheld`` when the data give the expected answer, else ``not_upheld``;
     ``not_checkable`` (with the reason) when a method named in the predicate has no rows for
@@ -71,7 +72,6 @@ import json
 import math
 import os
 import sys
-import tempfile
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -80,6 +80,8 @@ import jsonschema
 import numpy as np
 import pandas as pd
 import yaml
+
+from pipeline.atomic import write_csv
 
 try:
     from pipeline.columns import (
@@ -589,7 +591,15 @@ def _claim(
         method, quantity = pred["method"], pred["quantity"]
         row.update(quantity=quantity, method=method, published=pred["expect"])
         rows = _rows(error_budget, method, quantity)
-        rows = rows[rows["source"].isin(BUDGET_SOURCES)]
+        sources = tuple(pred.get("sources", BUDGET_SOURCES))
+        noise = rows[rows["source"] == "noise"]
+        rows = rows[rows["source"].isin(sources)]
+        if "noise" not in sources and not noise.empty:
+            notes.append(
+                "compared among the deterministic sources "
+                f"{', '.join(sources)}; the Monte Carlo noise std is "
+                f"{float(noise['error_pct'].iloc[0]):.4g} % at this scenario's averaging count"
+            )
         if rows.empty:
             return {
                 **row,
@@ -655,19 +665,8 @@ def verdicts(
 # entry points
 # --------------------------------------------------------------------------------------------
 def write_csv_atomic(frame: pd.DataFrame, out_path: str | os.PathLike[str]) -> None:
-    """Write a CSV via a temporary file in the same folder and os.replace."""
-    out = Path(out_path)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
-            frame.to_csv(handle, index=False, lineterminator="\n")
-            handle.flush()
-            os.fsync(handle.fileno())
-        os.replace(tmp, out)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    """Write the verdict table atomically (pipeline.atomic)."""
+    write_csv(out_path, frame, list(frame.columns))
 
 
 def run(

@@ -79,7 +79,9 @@ def validate(data: Any, schema: dict[str, Any], source: str | Path) -> None:
         return
     lines = []
     for err in errors:
-        value = "" if err.validator in ("additionalProperties", "required") else f" = {err.instance!r}"
+        value = (
+            "" if err.validator in ("additionalProperties", "required") else f" = {err.instance!r}"
+        )
         lines.append(f"{source}: {_field(err)}{value}: {_allowed(err)}")
     raise ConfigError("\n".join(lines))
 

@@ -130,7 +130,11 @@ def checks() -> list[Check]:
     )
     m2 = leveling.method2()
     out.append(
-        Check("20", printed=P.PRINTED["20"], derived=s.g * sp.Matrix([[m2["h_sin_theta"], m2["h_cth_sphi"]]]))
+        Check(
+            "20",
+            printed=P.PRINTED["20"],
+            derived=s.g * sp.Matrix([[m2["h_sin_theta"], m2["h_cth_sphi"]]]),
+        )
     )
     out.append(
         Check(
@@ -160,16 +164,25 @@ def checks() -> list[Check]:
             "beside eq. 24 has it (23.x), so this is an artefact of the two-column text",
         )
     )
-    out.append(Check("23.x", printed=P.PRINTED["23.x"], derived=leveling.ideal_accel("x", still=False)))
-    out.append(Check("23.y", printed=P.PRINTED["23.y"], derived=leveling.ideal_accel("y", still=False)))
-    out.append(Check("23.z", printed=P.PRINTED["23.z"], derived=leveling.ideal_accel("z", still=False)))
+    out.append(
+        Check("23.x", printed=P.PRINTED["23.x"], derived=leveling.ideal_accel("x", still=False))
+    )
+    out.append(
+        Check("23.y", printed=P.PRINTED["23.y"], derived=leveling.ideal_accel("y", still=False))
+    )
+    out.append(
+        Check("23.z", printed=P.PRINTED["23.z"], derived=leveling.ideal_accel("z", still=False))
+    )
     m3 = leveling.method3()
     out.append(
         Check(
             "24.a",
             printed=P.PRINTED["24.a"],
             derived=sp.Matrix(
-                [leveling.ideal_accel("y", d * DEG, still=False).subs(s.w, 0) for d in (90, 270, 0, 180)]
+                [
+                    leveling.ideal_accel("y", d * DEG, still=False).subs(s.w, 0)
+                    for d in (90, 270, 0, 180)
+                ]
             ),
             if_match="with the table stopped at each position (omega = 0, omega-dot kept)",
         )
@@ -197,7 +210,9 @@ def checks() -> list[Check]:
         )
     )
     sf_model = {**IDEAL, **SB}
-    out.append(Check("27", printed=P.PRINTED["27"], derived=leveling.real_accel("x").subs(sf_model)))
+    out.append(
+        Check("27", printed=P.PRINTED["27"], derived=leveling.real_accel("x").subs(sf_model))
+    )
     m5 = leveling.method5()
     out.append(
         Check(
@@ -234,9 +249,7 @@ def checks() -> list[Check]:
             derived=sp.Matrix([sum(c**2 for c in comps)] * 2),
         )
     )
-    out.append(
-        Check("33", printed=P.PRINTED["33"], derived=sp.Matrix([-m5["scale"], m5["scale"]]))
-    )
+    out.append(Check("33", printed=P.PRINTED["33"], derived=sp.Matrix([-m5["scale"], m5["scale"]])))
     out.append(Check("34", printed=P.PRINTED["34"], derived=m5["scale_approx"] - 1))
     out.append(Check("35", printed=P.PRINTED["35"], derived=sensors.table_rate_b()))
     out.append(Check("36", printed=P.PRINTED["36"], derived=sensors.earth_rate_b()))
@@ -276,7 +289,9 @@ def checks() -> list[Check]:
         Check(
             "40.c",
             printed=P.PRINTED["40.c"],
-            derived=sp.Matrix([azimuth.ideal_gyro("x", 90 * DEG), azimuth.ideal_gyro("x", 270 * DEG)]),
+            derived=sp.Matrix(
+                [azimuth.ideal_gyro("x", 90 * DEG), azimuth.ideal_gyro("x", 270 * DEG)]
+            ),
         )
     )
     a12 = azimuth.method1_case2()
@@ -393,7 +408,9 @@ def checks() -> list[Check]:
         Check(
             "54",
             printed=P.PRINTED["54"],
-            derived=sp.Matrix([azimuth.real_gyro("x", d * DEG).subs(gyro_sb) for d in (0, 90, 180)]),
+            derived=sp.Matrix(
+                [azimuth.real_gyro("x", d * DEG).subs(gyro_sb) for d in (0, 90, 180)]
+            ),
         )
     )
     a4 = azimuth.method4()
@@ -475,7 +492,11 @@ def checks() -> list[Check]:
     )
     # reading the last factor 'tan th' of the last term of 64.A as 'tan ph'
     cth, sth, tth, tph, tl = (
-        sp.cos(s.theta), sp.sin(s.theta), sp.tan(s.theta), sp.tan(s.phi), sp.tan(s.lam)
+        sp.cos(s.theta),
+        sp.sin(s.theta),
+        sp.tan(s.theta),
+        sp.tan(s.phi),
+        sp.tan(s.lam),
     )
     last = 2 * cth * tph * tl**2 * sth * tth
     tan_fix = P.PRINTED["64.A"] + last * tth - last * tph
@@ -505,9 +526,7 @@ def checks() -> list[Check]:
     )
     A5, B5, C5 = a5["_ABC"]
     to5 = {A5: P.A, B5: P.B, C5: P.C}
-    out.append(
-        Check("65.a", printed=P.PRINTED["65.a"], derived=a5["quad65"].xreplace(to5))
-    )
+    out.append(Check("65.a", printed=P.PRINTED["65.a"], derived=a5["quad65"].xreplace(to5)))
     roots = sp.Matrix([r.xreplace(to5) for r in a5["scale_roots"]])
     pos = {P.A: (0.2, 1.3), P.B: (0.2, 1.3)}
     out.append(

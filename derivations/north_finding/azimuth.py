@@ -36,7 +36,6 @@ from derivations.north_finding.symbols import (
     psi,
     sf,
     tau,
-    theta,
     w,
     w_tau,
     wx_0,
@@ -167,7 +166,9 @@ def method3() -> dict[str, sp.Expr]:
         "D47": poly.coeff_monomial(s_),
         "E47": poly.coeff_monomial(1),
     }
-    assert sp.expand(sum(poly.coeff_monomial(m) * m for m in (c_**2, c_, c_ * s_, s_, 1)) - lhs) == 0
+    assert (
+        sp.expand(sum(poly.coeff_monomial(m) * m for m in (c_**2, c_, c_ * s_, s_, 1)) - lhs) == 0
+    )
     coeff = {k: sp.factor(sp.simplify(v)) for k, v in coeff.items()}
     # eqs. 48-50: square (A c^2 + B c + E) = -(C c + D) s with s^2 = 1 - c^2
     A_, B_, C_, D_, E_ = sp.symbols("A B C D E", real=True)
@@ -225,9 +226,7 @@ def method5() -> dict[str, sp.Expr]:
     )[0]
     # eq. 63: cos^2 + sin^2 = 1; with u = 1/(S cos(lambda)) it is a quadratic in u
     u = sp.Symbol("u", positive=True)
-    unit = sp.expand(
-        sp.simplify((sol[c_] ** 2 + sol[s_] ** 2).subs(S, 1 / (u * sp.cos(lam))))
-    )
+    unit = sp.expand(sp.simplify((sol[c_] ** 2 + sol[s_] ** 2).subs(S, 1 / (u * sp.cos(lam)))))
     poly = sp.Poly(unit, u)
     # eq. 64: A = B u^2 + C u  (A = 1 - constant term)
     B64 = poly.coeff_monomial(u**2)
@@ -235,7 +234,9 @@ def method5() -> dict[str, sp.Expr]:
     A64 = 1 - poly.coeff_monomial(1)
     A_, B_, C_ = sp.symbols("A B C", real=True)
     # eq. 65: A cos^2(lambda) S^2 - C cos(lambda) S - B = 0
-    quad65 = sp.expand((B_ * u**2 + C_ * u - A_).subs(u, 1 / (S * sp.cos(lam))) * -S**2 * sp.cos(lam) ** 2)
+    quad65 = sp.expand(
+        (B_ * u**2 + C_ * u - A_).subs(u, 1 / (S * sp.cos(lam))) * -(S**2) * sp.cos(lam) ** 2
+    )
     roots = sp.solve(quad65, S)
     # eq. 66: S = 1 + sf with sf^2 dropped
     sf_approx = sp.solve(sp.expand(quad65.subs(S, 1 + sf)).subs(sf**2, 0), sf)[0]

@@ -10,8 +10,6 @@ import argparse
 import sys
 from pathlib import Path
 
-import sympy as sp
-
 from derivations.codegen import GeneratedFunction, render_module, write_module
 from derivations.north_finding import azimuth, leveling, sensors
 from derivations.north_finding import symbols as s
@@ -82,7 +80,10 @@ def functions() -> list[GeneratedFunction]:
             "Angular rate [omega^{BI}]^B = [0, 0, omega] + [T]^{BT}[T]^{TN}[omega^{EI}]^N (eqs. 35-37).",
         ),
         GeneratedFunction(
-            "l1_sin_theta", (s.ax_0, s.ax_180, s.g), l1["sin_theta"], "Levelling method 1, eq. 19: sin(theta)."
+            "l1_sin_theta",
+            (s.ax_0, s.ax_180, s.g),
+            l1["sin_theta"],
+            "Levelling method 1, eq. 19: sin(theta).",
         ),
         GeneratedFunction(
             "l1_sin_phi",
@@ -98,7 +99,10 @@ def functions() -> list[GeneratedFunction]:
             "    Y = a_x / g.",
         ),
         GeneratedFunction(
-            "l3_sin_theta", (s.ay_90, s.ay_270, s.g), l3["sin_theta"], "Levelling method 3, eq. 24: sin(theta)."
+            "l3_sin_theta",
+            (s.ay_90, s.ay_270, s.g),
+            l3["sin_theta"],
+            "Levelling method 3, eq. 24: sin(theta).",
         ),
         GeneratedFunction(
             "l3_sin_phi",
@@ -113,7 +117,9 @@ def functions() -> list[GeneratedFunction]:
             "Levelling method 4, eqs. 25-26: row of H for X = [cos(theta) sin(phi), sin(theta)],\n"
             "    Y = -a_y / g.",
         ),
-        GeneratedFunction("l5_bias", (s.ax_0, s.ax_180), l5["bias"], "Levelling method 5, eq. 28: bias."),
+        GeneratedFunction(
+            "l5_bias", (s.ax_0, s.ax_180), l5["bias"], "Levelling method 5, eq. 28: bias."
+        ),
         GeneratedFunction(
             "l5_components",
             (s.ax_0, s.ax_90, s.ax_180, s.az),
@@ -184,7 +190,9 @@ def functions() -> list[GeneratedFunction]:
             "Azimuth method 3, eq. 47 before squaring: its residual, which rejects the roots\n"
             "    that squaring (eq. 49) introduces.",
         ),
-        GeneratedFunction("a4_bias", (s.wx_0, s.wx_180), a4["bias"], "Azimuth method 4, eq. 55: gyro bias."),
+        GeneratedFunction(
+            "a4_bias", (s.wx_0, s.wx_180), a4["bias"], "Azimuth method 4, eq. 55: gyro bias."
+        ),
         GeneratedFunction(
             "a4_omegas",
             (s.wx_0, s.wx_90, s.wx_180, s.Omega),
@@ -263,7 +271,10 @@ def main(argv: list[str] | None = None) -> int:
     if args.check:
         current = args.out.read_text(encoding="utf-8") if args.out.exists() else ""
         if current != text:
-            print(f"{args.out} is stale: run python -m derivations.north_finding.generate", file=sys.stderr)
+            print(
+                f"{args.out} is stale: run python -m derivations.north_finding.generate",
+                file=sys.stderr,
+            )
             return 1
         return 0
     write_module(args.out, text)

@@ -18,9 +18,6 @@ import sympy as sp
 from derivations.north_finding import sensors
 from derivations.north_finding.symbols import (
     S,
-    a1 as A1,
-    a2 as A2,
-    a3 as A3,
     ax_0,
     ax_90,
     ax_180,
@@ -38,6 +35,15 @@ from derivations.north_finding.symbols import (
     sf,
     tau,
     theta,
+)
+from derivations.north_finding.symbols import (
+    a1 as A1,
+)
+from derivations.north_finding.symbols import (
+    a2 as A2,
+)
+from derivations.north_finding.symbols import (
+    a3 as A3,
 )
 
 __all__ = [
@@ -150,9 +156,7 @@ def method5() -> dict[str, sp.Expr]:
     so that it reads along z (eq. 30). Scale factor S and bias b, no misalignment.
     """
     sb = {S: S, b: b}
-    model = {
-        d: real_accel("x", d * DEG).subs({**IDEAL, **sb}) for d in (0, 90, 180)
-    }
+    model = {d: real_accel("x", d * DEG).subs({**IDEAL, **sb}) for d in (0, 90, 180)}
     model_z = real_accel("z").subs({**IDEAL, **sb})
     # eq. 28: a(0) + a(180) = 2 b
     bias = solve_linear(ax_0 + ax_180 - (model[0] + model[180]), b)

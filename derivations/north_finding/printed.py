@@ -72,8 +72,8 @@ PRINTED: dict[str, object] = {}
 
 # eq. 16: -g [[cos t, sin t, 0], [-sin t, cos t, 0], [0, 0, 1]] [-sin th, cos th sin ph, cos th cos ph]
 #          = -g [ -cos t sin th + sin t cos th ; sin t sin th + cos t cos th ; cos th cos ph ]
-PRINTED["16.a"] = -g * sp.Matrix([[ct, st, 0], [-st, ct, 0], [0, 0, 1]]) * sp.Matrix(
-    [-sth, cth * sph, cth * cph]
+PRINTED["16.a"] = (
+    -g * sp.Matrix([[ct, st, 0], [-st, ct, 0], [0, 0, 1]]) * sp.Matrix([-sth, cth * sph, cth * cph])
 )
 PRINTED["16.b"] = -g * sp.Matrix([-ct * sth + st * cth, st * sth + ct * cth, cth * cph])
 
@@ -142,9 +142,7 @@ PRINTED["30"] = -S * g * cth * cph + b
 # eq. 31: a_3 = a_z - b = -S g cos th cos ph
 PRINTED["31"] = -S * g * cth * cph
 # eq. 32: a1^2 + a2^2 + a3^2 = S^2 g^2 (sin^2 th + cos^2 th sin^2 ph + cos^2 th cos^2 ph) = S^2 g^2
-PRINTED["32"] = sp.Matrix(
-    [S**2 * g**2 * (sth**2 + cth**2 * sph**2 + cth**2 * cph**2), S**2 * g**2]
-)
+PRINTED["32"] = sp.Matrix([S**2 * g**2 * (sth**2 + cth**2 * sph**2 + cth**2 * cph**2), S**2 * g**2])
 # eq. 33: S = -/+ sqrt((a1^2 + a2^2 + a3^2) / g^2), sf = S - 1
 PRINTED["33"] = sp.Matrix(
     [-sqrt((a1**2 + a2**2 + a3**2) / g**2), sqrt((a1**2 + a2**2 + a3**2) / g**2)]
@@ -244,13 +242,21 @@ PRINTED["48"] = (A * c_psi**2 + B * c_psi + E) - (-C * c_psi * s_psi - D * s_psi
 PRINTED["49"] = (A * c_psi**2 + B * c_psi + E) ** 2 - (-C * c_psi * s_psi - D * s_psi) ** 2
 # eq. 50: F = A^2 + C^2, G = 2AB + 2CD, H = B^2 + 2AE - C^2 + D^2, I = 2BE - 2CD, J = E^2 - D^2
 PRINTED["50"] = sp.Matrix(
-    [A**2 + C**2, 2 * A * B + 2 * C * D, B**2 + 2 * A * E - C**2 + D**2, 2 * B * E - 2 * C * D, E**2 - D**2]
+    [
+        A**2 + C**2,
+        2 * A * B + 2 * C * D,
+        B**2 + 2 * A * E - C**2 + D**2,
+        2 * B * E - 2 * C * D,
+        E**2 - D**2,
+    ]
 )
 # eq. 51: df/dt = 0 -> A cos t - B sin t = 0 -> tan t = A / B
 PRINTED["51"] = sp.Matrix([A * ct - B * st, A / B])
 # eq. 52: tan^-1(A/B) = t* = tan^-1( (cos ps sin th sin ph cos l) / (sin ps cos ph cos l - cos th sin ph sin l) )
 #         / cos ps cos th cos l + sin th sin l       [tan of both sides transcribed]
-PRINTED["52"] = (cps * sth * sph * cl / (sps * cph * cl - cth * sph * sl)) / (cps * cth * cl + sth * sl)
+PRINTED["52"] = (cps * sth * sph * cl / (sps * cph * cl - cth * sph * sl)) / (
+    cps * cth * cl + sth * sl
+)
 
 # eq. 53: w~_x = S (d_x ; d_y) + b, d_x = w^El sin t [(...) cos l - cos th sin ph sin l],
 #         d_y = + w^El cos t [cos ps cos th cos l + sin th sin l]
@@ -264,7 +270,9 @@ PRINTED["56.a"] = sp.Matrix([(wx_0 - b) / Omega, (wx_90 - b) / Omega])
 PRINTED["56.b"] = sp.Matrix([S * _X, S * _Y])
 # eq. 57: omega_1/omega_2 = (cos ps cos th cos l)/(sin th sin l)
 #         + (cos ps sin th sin ph - sin ps cos ph cos l)/(-cos th sin ph sin l)
-PRINTED["57"] = (cps * cth * cl) / (sth * sl) + (cps * sth * sph - sps * cph * cl) / (-cth * sph * sl)
+PRINTED["57"] = (cps * cth * cl) / (sth * sl) + (cps * sth * sph - sps * cph * cl) / (
+    -cth * sph * sl
+)
 # eq. 58: A sin ps + B cos ps = C, A = -omega_1 cos ph / "2", B = omega_1 (sin th sin ph - cos th) / "2",
 #         C = sin th tan l + omega_1 cos th sin ph tan l / "2"   ["2" read as omega_2, its subscript]
 PRINTED["58"] = sp.Matrix(
@@ -282,7 +290,10 @@ PRINTED["60"] = om1 / (cps * cth * cl + sth * sl)
 # eq. 61: omega_3 = omega_1/(S cos l) - sin th tan l = cos ps cos th
 #         omega_4 = omega_2/(S cos l) + cos th sin ph tan l = cos ps sin th sin ph - sin ps cos ph
 PRINTED["61"] = sp.Matrix(
-    [om1 / (S * cl) - sth * tl - cps * cth, om2 / (S * cl) + cth * sph * tl - (cps * sth * sph - sps * cph)]
+    [
+        om1 / (S * cl) - sth * tl - cps * cth,
+        om2 / (S * cl) + cth * sph * tl - (cps * sth * sph - sps * cph),
+    ]
 )
 # eq. 62: cos ps = omega_3 / cos th ; sin ps = omega_3 tan th tan ph - omega_4 / cos ph
 om4 = sp.Symbol("omega_4", real=True)
@@ -308,7 +319,9 @@ PRINTED["64.A"] = (
     - tph**2 * tl**2 * sth**2 * tth**2
     - 2 * cth * tph * tl**2 * sth * tth * tth
 )
-PRINTED["64.B"] = om2**2 / cph**2 + om1**2 / cth**2 + om1**2 * tph**2 * tth**2 - 2 * om1 * om2 * tph * tth / cph
+PRINTED["64.B"] = (
+    om2**2 / cph**2 + om1**2 / cth**2 + om1**2 * tph**2 * tth**2 - 2 * om1 * om2 * tph * tth / cph
+)
 PRINTED["64.C"] = (
     2 * om2 * tph * tl * sth * tth / cph
     - 2 * om1 * cth * tph**2 * tl * tth
@@ -342,7 +355,25 @@ PRINTED["70"] = sqrt(om1**2 + om2**2 + om3**2)
 #         sf^2 ~ 0 -> sf = (beta - 1)/2
 PRINTED["71"] = (om1**2 + om2**2 + om3**2 - 1) / 2
 
-__all__ = ["PRINTED", "A", "B", "C", "D", "E", "F", "G", "H", "I", "J", "c_psi", "s_psi", "tau_i", "a_yi", "om4", "w_tau"]
+__all__ = [
+    "PRINTED",
+    "A",
+    "B",
+    "C",
+    "D",
+    "E",
+    "F",
+    "G",
+    "H",
+    "I",
+    "J",
+    "c_psi",
+    "s_psi",
+    "tau_i",
+    "a_yi",
+    "om4",
+    "w_tau",
+]
 
 # keep linters quiet about names used only in comments/transcriptions
 _ = (ax_0, ax_90, ax_180, ax_270, ay_0, ay_90, ay_180, ay_270, az, a_xi, sf, wz, F, G, H, I, J, psi)

@@ -96,7 +96,7 @@ def earth_rate_b(tau_: sp.Expr = tau) -> sp.Matrix:
     return mat_bn(tau_) * frames.earth_rate_n(Omega, lam)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _table_kinematics() -> tuple[sp.Matrix, sp.Matrix]:
     """Velocity and acceleration of the sensor relative to T, expressed in B.
 

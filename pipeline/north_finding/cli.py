@@ -63,7 +63,9 @@ def _simulate_readings(args: argparse.Namespace) -> int:
     if sc.kind != "simulated":
         raise ConfigError(f"{args.scenario}: type must be 'simulated' to simulate readings")
     tau, axis, _ = rd.simulation_positions(sc)
-    normals = rd.standard_normals(sc.seed, scenario_key(sc.name), args.trial + 1, tau.size)[args.trial :]
+    normals = rd.standard_normals(sc.seed, scenario_key(sc.name), args.trial + 1, tau.size)[
+        args.trial :
+    ]
     r = rd.simulate(sc, sc.accel, sc.gyro, normals, sc.n_samples)
     frame = pd.DataFrame(
         {

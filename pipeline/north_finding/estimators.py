@@ -37,7 +37,9 @@ def wrap_pi(angle: np.ndarray) -> np.ndarray:
     return -((-np.asarray(angle) + np.pi) % (2 * np.pi) - np.pi)
 
 
-def select_nearest(candidates: np.ndarray, prior: np.ndarray, valid: np.ndarray | None = None) -> np.ndarray:
+def select_nearest(
+    candidates: np.ndarray, prior: np.ndarray, valid: np.ndarray | None = None
+) -> np.ndarray:
     """Pick, per trial, the candidate angle nearest to the compass prior.
 
     ``candidates`` (T, K) in rad; NaN or ``valid == False`` entries are never picked.
@@ -118,10 +120,10 @@ def solve_quartic_psi(coeffs47: tuple[np.ndarray, ...], prior: np.ndarray) -> np
        complex roots are used instead.
     """
     A, B, C, D, E = (np.asarray(c, dtype=float) for c in coeffs47)
-    F, G, H, I, J = gen.a3_quartic_coeffs(A, B, C, D, E)
+    F, G, H, I_, J = gen.a3_quartic_coeffs(A, B, C, D, E)
     n = F.shape[0]
     comp = np.zeros((n, 4, 4))
-    comp[:, 0, :] = -np.stack([G, H, I, J], axis=1) / F[:, None]
+    comp[:, 0, :] = -np.stack([G, H, I_, J], axis=1) / F[:, None]
     comp[:, 1, 0] = comp[:, 2, 1] = comp[:, 3, 2] = 1.0
     roots = np.linalg.eigvals(comp)  # (T, 4)
     c = np.clip(roots.real, -1.0, 1.0)

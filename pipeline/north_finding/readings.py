@@ -102,7 +102,9 @@ def check_needs(readings: Readings, methods: tuple[str, ...], a2_tau_deg: float 
             elif pos == "a2":
                 if a2_tau_deg is None:
                     if readings.columns(axis, "a2").size == 0:
-                        raise ValueError(f"method {method} needs a2_tau_deg (the table angle it uses)")
+                        raise ValueError(
+                            f"method {method} needs a2_tau_deg (the table angle it uses)"
+                        )
                 else:
                     readings.index(axis, a2_tau_deg, method)
             elif readings.columns(axis).size == 0:
@@ -219,7 +221,11 @@ def _true_vectors(sc: Scenario, tau_deg: np.ndarray) -> tuple[np.ndarray, np.nda
             tb["accel_rad_s2"],
         )
     )
-    w_b = np.stack(gen.angular_rate_b(sc.omega_ie, sc.lat, t["psi"], t["theta"], t["phi"], tau, tb["rate_rad_s"]))
+    w_b = np.stack(
+        gen.angular_rate_b(
+            sc.omega_ie, sc.lat, t["psi"], t["theta"], t["phi"], tau, tb["rate_rad_s"]
+        )
+    )
     return f_b, w_b
 
 

@@ -62,7 +62,9 @@ def truth_values(sc: Scenario, off: tuple[str, ...] = ()) -> dict[str, float]:
         )
     if sc.accel is not None:
         acc = sc.accel.without(*off)
-        out.update(acc_bias_ug=acc.bias / sc.g * 1e6, acc_scale=acc.scale, acc_scale_approx=acc.scale)
+        out.update(
+            acc_bias_ug=acc.bias / sc.g * 1e6, acc_scale=acc.scale, acc_scale_approx=acc.scale
+        )
     if sc.gyro is not None:
         gyr = sc.gyro.without(*off)
         out.update(gyro_bias_rad_s=gyr.bias, gyro_scale=gyr.scale, gyro_scale_approx=gyr.scale)
@@ -85,9 +87,7 @@ def _error_pct(estimate: np.ndarray, truth: float, quantity: str) -> np.ndarray:
 
 
 def _ordered(estimates: est.Estimates) -> list[tuple[str, str]]:
-    return [
-        (m, q) for m in col.METHODS for q in col.METHOD_QUANTITIES[m] if (m, q) in estimates
-    ]
+    return [(m, q) for m in col.METHODS for q in col.METHOD_QUANTITIES[m] if (m, q) in estimates]
 
 
 def estimates_frame(estimates: est.Estimates, truth: dict[str, float], sensor: str) -> pd.DataFrame:
@@ -158,7 +158,9 @@ class _Runner:
     def run(self, off: tuple[str, ...], normals: np.ndarray | None, n_samples: int, methods=None):
         sc = self.sc
         methods = methods or sc.methods
-        readings = rd.simulate(sc, sc.accel.without(*off), sc.gyro.without(*off), normals, n_samples)
+        readings = rd.simulate(
+            sc, sc.accel.without(*off), sc.gyro.without(*off), normals, n_samples
+        )
         prior = np.full(readings.n_trials, self.psi + sc.compass_offset)
         return est.estimate_all(
             readings,
@@ -273,7 +275,9 @@ OUTPUTS = {
 }
 
 
-def run_scenario(scenario: Scenario | str | Path, out_dir: str | Path, log=print) -> dict[str, Path]:
+def run_scenario(
+    scenario: Scenario | str | Path, out_dir: str | Path, log=print
+) -> dict[str, Path]:
     """Run a scenario (validated first) and write its results atomically into ``out_dir``."""
     from pipeline.provenance import provenance
 
@@ -308,7 +312,9 @@ def _relative(path: Path) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     parser.add_argument("--scenario", required=True, type=Path, help="scenario YAML file")
     parser.add_argument("--out-dir", required=True, type=Path, help="results directory to write")
     args = parser.parse_args(argv)

@@ -173,7 +173,11 @@ def _check_semantics(sc: Scenario) -> None:
             f"{sc.path}: level_source = {sc.level_source!r} must be 'truth' or one of the "
             f"levelling methods listed in methods {list(sc.methods)}"
         )
-    if sc.level_source == "truth" and sc.truth is None and any(m.startswith("A") for m in sc.methods):
+    if (
+        sc.level_source == "truth"
+        and sc.truth is None
+        and any(m.startswith("A") for m in sc.methods)
+    ):
         raise ConfigError(
             f"{sc.path}: level_source = 'truth' needs a 'truth' block; give one or use a levelling "
             "method (L1..L4)"
@@ -188,9 +192,13 @@ def _check_semantics(sc: Scenario) -> None:
                 )
         ms = sc.table["max_search"]
         if ms["mode"] == "scan" and "step_deg" not in ms:
-            raise ConfigError(f"{sc.path}: table.max_search.step_deg is required when mode = 'scan'")
+            raise ConfigError(
+                f"{sc.path}: table.max_search.step_deg is required when mode = 'scan'"
+            )
     else:
         if "A2" in sc.methods and "a2_tau_deg" not in sc.raw:
             raise ConfigError(f"{sc.path}: a2_tau_deg is required when method A2 runs on readings")
         if sc.readings_csv is None or not sc.readings_csv.is_file():
-            raise ConfigError(f"{sc.path}: readings_csv = {sc.raw.get('readings_csv')!r}: file not found")
+            raise ConfigError(
+                f"{sc.path}: readings_csv = {sc.raw.get('readings_csv')!r}: file not found"
+            )

@@ -34,7 +34,9 @@ def scenarios(directory: str | Path) -> list[str]:
     return names
 
 
-def validate_scenarios(names: list[str], directory: str | Path = "config/scenarios/north_finding") -> None:
+def validate_scenarios(
+    names: list[str], directory: str | Path = "config/scenarios/north_finding"
+) -> None:
     """Load and validate every scenario; the first bad file stops the workflow before any job."""
     for name in names:
         load_scenario(Path(directory) / f"{name}.yaml")

@@ -24,13 +24,14 @@ import html as _html
 import math
 import os
 import re
-import tempfile
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from numbers import Integral, Real
 from pathlib import Path
 from typing import Any
 
 import pandas as pd
+
+from pipeline.atomic import write_bytes
 
 __all__ = [
     "DEFAULT_CSS",
@@ -282,26 +283,9 @@ def page(title: str, body: str, *, css: str = DEFAULT_CSS, lang: str = "en") -> 
 def write_atomic(
     path: str | os.PathLike[str], data: str | bytes, *, encoding: str = "utf-8"
 ) -> Path:
-    """Write ``data`` to ``path`` atomically: temp file in the same directory,
-    fsync, then ``os.replace``. Creates parent directories. Returns the path.
+    """Write ``data`` to ``path`` atomically (temp file, fsync, ``os.replace``; pipeline.atomic).
 
     A reader never sees a half-written file, and a crash leaves the old file.
     """
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     payload = data.encode(encoding) if isinstance(data, str) else bytes(data)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(payload)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise
-    return path
+    return write_bytes(path, payload)
