@@ -124,6 +124,12 @@ KIND_SENSOR = {"exact": "ideal", "statistical": "real"}
 RANK_BAND = (0.5, 99.5)
 #: Relative floating-point slack added to the half-unit tolerance.
 REL_SLACK = 1e-12
+#: Note added when the noise-free real value equals the published one to its printed precision.
+NOISE_FREE_AGREES = (
+    "the noise-free real value equals the published one to within one unit of its last printed "
+    "digit: the table matches deterministic error propagation"
+)
+
 #: Error-budget sources a dominant_source claim chooses from.
 BUDGET_SOURCES = tuple(s for s in ERROR_SOURCES if s != "all_deterministic")
 
@@ -501,6 +507,10 @@ def _statistical(
             f"noise-free real: {_fmt(float(det['estimate']))} "
             f"(error {float(det['error_pct']):+.4g} %)"
         )
+        if item["value"] is not None:
+            gap = abs(float(det["estimate"]) - published) / (2.0 * half_unit(item["value"]))
+            if gap <= 1.0:
+                notes.append(NOISE_FREE_AGREES)
     else:
         notes.append("noise-free real: n/a (no real row in estimates.csv)")
     truth = float(rows["truth"].iloc[0])
