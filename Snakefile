@@ -14,8 +14,10 @@ configfile: "config/config.yaml"
 
 include: "pipeline/rules/common.smk"
 include: "pipeline/rules/north_finding.smk"
+include: "pipeline/rules/platform_drift.smk"
 
 
 rule all:
     input:
         rules.north_finding_all.input,
+        rules.platform_drift_all.input,

@@ -46,6 +46,13 @@ SENSITIVITY_COLUMNS = [
     "n_trials",
 ]
 
+# results/platform_drift/<scenario>/errors.csv (and errors_long.csv, errors_diagnostic.csv)
+ERRORS_COLUMNS = ["t_s", "case", "scheme", "error_m"]
+DRIFT_CASES = ("none", "ch1", "ch3", "ch1_ch3")
+DRIFT_SCHEMES = ("proposed_analytic", "proposed_simulated", "strapdown")
+# results/platform_drift/<scenario>/summary.csv
+DRIFT_SUMMARY_COLUMNS = ["case", "scheme", "error_2h_m", "error_max_m", "crossover_s"]
+
 LEVELING_METHODS = ("L1", "L2", "L3", "L4", "L5")
 AZIMUTH_METHODS = ("A1c1", "A1c2", "A2", "A3", "A4", "A5", "A6")
 METHODS = LEVELING_METHODS + AZIMUTH_METHODS

@@ -1,5 +1,7 @@
 # Shared set-up: config validation, import path, and the paper-independent inputs.
 import os
+import sys
+from pathlib import Path
 
 from snakemake.utils import validate
 
@@ -9,6 +11,8 @@ validate(config, "../../config/schemas/config.schema.json")
 os.environ["PYTHONPATH"] = os.pathsep.join(
     p for p in (workflow.basedir, os.environ.get("PYTHONPATH", "")) if p
 )
+
+sys.path.insert(0, workflow.basedir)
 
 RESULTS = config["results_dir"]
 REPORTS = config["reports_dir"]

@@ -1,0 +1,310 @@
+"""Generate ``pipeline/generated/platform_drift.py`` from the derivations.
+
+Run ``python -m derivations.platform_drift.generate``; ``--check`` exits non-zero if the
+committed file is stale. Where the printed equation differs from the derivation (eqs. 16,
+17, 20, 24, 36, Table 2 row 5; see the audit), the generated function is the derived one.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from derivations.codegen import GeneratedFunction, render_module, write_module
+from derivations.platform_drift import algorithm as alg
+from derivations.platform_drift import alignment as al
+from derivations.platform_drift import drift as dr
+from derivations.platform_drift import kinematics as kin
+from derivations.platform_drift import schuler as sch
+from derivations.platform_drift import specific_force as sf
+from derivations.platform_drift import symbols as s
+
+OUTPUT = Path(__file__).resolve().parents[2] / "pipeline" / "generated" / "platform_drift.py"
+
+NAMES = {
+    s.lat: "lat",
+    s.lon: "lon",
+    s.lat_dot: "lat_dot",
+    s.lon_dot: "lon_dot",
+    s.lat_ddot: "lat_ddot",
+    s.lon_ddot: "lon_ddot",
+    s.g: "g",
+    s.r0m: "r_0m",
+    s.psi0: "psi0",
+    s.omega0: "omega0",
+    s.R0: "R0",
+}
+
+HEADER = """Numeric code of the stable-platform gyro-drift paper, generated from derivations/platform_drift.
+
+Regenerate: python -m derivations.platform_drift.generate
+Conventions: SI units, angles in rad, rates in rad/s; lat is the latitude phi_i of the mass
+navigation frame m_N (north, west, up); every function broadcasts its arguments. Where the
+paper prints an equation that differs from the derivation, the derived form is generated."""
+
+
+def _fn(name, args, exprs, doc, names=None) -> GeneratedFunction:
+    return GeneratedFunction(name, tuple(args), exprs, doc, {**NAMES, **(names or {})})
+
+
+def functions() -> list[GeneratedFunction]:
+    """The generated functions, each derived in derivations/platform_drift."""
+    rdot, vdot = kin.position_rates_s(), kin.velocity_rates_s()
+    grav = alg.gravity_s()
+    osc = alg.oscillation_equations()
+    lc = alg.level_commands()
+    pr = alg.position_rates()
+    k19 = alg.tilt_kinematics_stationary()
+    f_exact = sf.specific_force_s_exact()
+    f17 = sf.specific_force_s()
+    t20 = al.tilts_0m_exact()
+    j27 = al.tilt_rates_0p()
+    c1, c3 = dr.channel1(), dr.channel3()
+    t2 = sch.table2()
+    stat = sf.STATIONARY
+    fns = [
+        _fn(
+            "motion_rates",
+            (s.x, s.y, s.z, s.u, s.v, s.w, s.p, s.q, s.r, s.f1, s.f2, s.f3, s.g1, s.g2, s.g3),
+            (*rdot, *vdot),
+            "Navigation equations in the platform frame s (eqs. 9 and 11):\n"
+            "    x_dot = r y - q z + u, ..., u_dot = r v - q w + f1 + g1, ...\n"
+            "    Returns (x_dot, y_dot, z_dot, u_dot, v_dot, w_dot).",
+        ),
+        _fn(
+            "gravity_spherical",
+            (s.x, s.y, s.z, s.GM),
+            tuple(grav),
+            "Spherical mass attraction -GM r / |r|^3 in s (the gravity model of eq. 15).\n"
+            "    Returns (g1, g2, g3).",
+        ),
+        _fn(
+            "platform_commands_rates",
+            (s.f1, s.f2, s.z),
+            (lc["p_dot"], lc["q_dot"]),
+            "Position-independent torquing commands (eq. 12): p_dot = -f2/z, q_dot = f1/z.\n"
+            "    Derived as the rates that keep a level platform level. Returns (p_dot, q_dot).",
+        ),
+        _fn(
+            "oscillation_rates",
+            (
+                s.omega_x,
+                s.omega_y,
+                s.phi_x,
+                s.phi_y,
+                s.p,
+                s.q,
+                s.r,
+                s.p_dot,
+                s.q_dot,
+                s.z,
+                s.z_dot,
+                s.R_G,
+                s.GM,
+            ),
+            tuple(osc[k] for k in ("omega_x_dot", "omega_y_dot", "phi_x_dot", "phi_y_dot")),
+            "Platform oscillation ODEs (eq. 15, spherical gravity), with omega_y = u/z,\n"
+            "    omega_x = -v/z, phi_y = -x/R_G, phi_x = y/R_G (eqs. 13-14).\n"
+            "    Returns (omega_x_dot, omega_y_dot, phi_x_dot, phi_y_dot).",
+        ),
+        _fn(
+            "position_rates",
+            (s.p_m, s.q_m, s.r_m, s.lat, s.psi, s.omega_e),
+            (pr["lambda_dot"], pr["phi_i_dot"], pr["psi_dot"]),
+            "Explicit form of the position equation (eq. 16, derived; the printed matrix form has\n"
+            "    C psi for S psi in -^{m_i} omega_ie): (lambda_dot + omega_e) cos(lat) =\n"
+            "    cos psi p_m - sin psi q_m, lat_dot = sin psi p_m + cos psi q_m,\n"
+            "    psi_dot = r_m - (lambda_dot + omega_e) sin(lat). The algorithm uses p_m = omega_x,\n"
+            "    q_m = omega_y, r_m = 0. Singular at the poles. Returns (lon_dot, lat_dot, psi_dot).",
+        ),
+        _fn(
+            "specific_force_platform",
+            (
+                s.R,
+                s.g,
+                s.omega_e,
+                s.lat,
+                s.lat_dot,
+                s.lat_ddot,
+                s.lon_dot,
+                s.lon_ddot,
+                s.psi,
+                s.phi_x,
+                s.phi_y,
+            ),
+            tuple(f_exact),
+            "Specific force on the platform of a vehicle moving on a sphere of radius R with\n"
+            "    Earth rate (exact in the tilts; eq. 17 is its first-order form). g is the mass\n"
+            "    gravity g_i. Returns (f1, f2, f3).",
+        ),
+        _fn(
+            "specific_force_platform_linear",
+            (
+                s.R,
+                s.g,
+                s.omega_e,
+                s.lat,
+                s.lat_dot,
+                s.lat_ddot,
+                s.lon_dot,
+                s.lon_ddot,
+                s.psi,
+                s.phi_x,
+                s.phi_y,
+            ),
+            (f17[0], f17[1]),
+            "Eq. 17 derived (first order in the tilts; the printed Coriolis term squares\n"
+            "    (lambda_dot + omega_e), which is a typo). Returns (f1, f2).",
+        ),
+        _fn(
+            "specific_force_stationary",
+            (s.R, s.g, s.omega_e, s.lat, s.psi, s.phi_x, s.phi_y),
+            (f17[0].subs(stat), f17[1].subs(stat)),
+            "Eq. 18: the specific force of eq. 17 for a vehicle at rest. Returns (f1, f2).",
+        ),
+        _fn(
+            "tilt_kinematics_stationary",
+            (s.p, s.q, s.r, s.phi_x, s.phi_y, s.psi, s.lat, s.omega_e),
+            tuple(k19[k] for k in ("phi_x_dot", "phi_y_dot", "psi_dot")),
+            "Eq. 19: tilt and azimuth kinematics of the platform at rest, first order in the tilts.\n"
+            "    Returns (phi_x_dot, phi_y_dot, psi_dot).",
+        ),
+        _fn(
+            "k_sh_stationary",
+            (s.g, s.R, s.omega_e, s.lat),
+            sf.k_sh_from_specific_force().subs(stat),
+            "Schuler-like constant k_sh of eq. 28 at rest: g/R - omega_e^2 cos^2(lat)\n"
+            "    (the vertical specific force over R).",
+        ),
+        _fn(
+            "alpha_deflection",
+            (s.R, s.omega_e, s.lat, s.g),
+            sf.deflection_first_order(),
+            "Plumb-line deflection alpha of eq. 21 (eq. 1's alpha_T to first order):\n"
+            "    R omega_e^2 sin(lat) cos(lat) / g.",
+        ),
+        _fn(
+            "alignment_tilts",
+            (s.R, s.omega_e, s.lat, s.psi, s.g, s.b_a1, s.b_a2),
+            (t20["phi_x"], t20["phi_y"]),
+            "Tilts at the end of alignment (eq. 20, derived: the printed form swaps sin/cos psi).\n"
+            "    Returns (phi_x, phi_y).",
+        ),
+        _fn(
+            "r_alignment",
+            (s.omega_e, s.lat, s.psi, s.alpha, s.theta_F1, s.theta_F2),
+            al.r_0m(),
+            "Platform rate about axis 3 at the end of alignment, r(0-) (eq. 24, derived: includes\n"
+            "    + alpha omega_e cos(lat), which the paper drops).",
+        ),
+        _fn(
+            "nav_initial_tilt_rates",
+            (s.b_g1, s.b_g2, s.b_g3, s.r0m, s.phi_x, s.phi_y),
+            (j27["phi_x_dot"], j27["phi_y_dot"]),
+            "Tilt rates at the start of navigation (eq. 27): (phi_x_dot(0+), phi_y_dot(0+)).",
+        ),
+        _fn(
+            "error_ch1",
+            (s.t, s.b_g1, s.k_sh),
+            c1["norm"],
+            "Position error angle (rad) for a constant level-gyro drift b_g1 at rest (eq. 32):\n"
+            "    |b_g1| (t - sin(sqrt(k_sh) t) / sqrt(k_sh)). Multiply by R for distance.",
+        ),
+        _fn(
+            "error_ch3",
+            (s.t, s.b_g3, s.omega_e, s.lat, s.psi0, s.k_sh, s.alpha),
+            (c3["int_p"], c3["int_q"]),
+            "Integrated rate errors (int p_merror, int q_merror) in rad for a constant azimuth-gyro\n"
+            "    drift b_g3 at rest (eq. 36, derived: the first term of int q_merror is\n"
+            "    -alpha sin(psi0) b_g3 sin(sqrt(k_sh) t)/sqrt(k_sh); the paper prints '+').\n"
+            "    Requires omega_e^2 sin^2(lat0) != k_sh.",
+            {s.lat: "lat0"},
+        ),
+        _fn(
+            "schuler_period",
+            (s.g, s.R),
+            sch.schuler_period(),
+            "Schuler period 2 pi / sqrt(g / R) (eq. 30 with k_sh = g/R).",
+        ),
+        _fn(
+            "table2_accel_bias",
+            (s.t, s.B_x, s.omega0),
+            t2["T2.1"],
+            "Table 2 row 1: accelerometer bias, B/omega0^2 (1 - cos omega0 t).",
+            {s.B_x: "B"},
+        ),
+        _fn(
+            "table2_initial_tilt",
+            (s.t, s.phi_y0, s.R0, s.omega0),
+            t2["T2.2"],
+            "Table 2 row 2: initial tilt, -R0 phi0 (1 - cos omega0 t).",
+            {s.phi_y0: "phi0"},
+        ),
+        _fn(
+            "table2_scale_factor",
+            (s.t, s.k_x, s.dV_x, s.omega0),
+            t2["T2.3"],
+            "Table 2 row 3: scale factor k and velocity change dV at t = 0, k dV/omega0 sin omega0 t.",
+            {s.k_x: "k", s.dV_x: "dV"},
+        ),
+        _fn(
+            "table2_gyro_drift",
+            (s.t, s.eps_y, s.R0, s.omega0),
+            t2["T2.4"],
+            "Table 2 row 4: level gyro drift, -R0 eps (t - sin(omega0 t)/omega0).",
+            {s.eps_y: "eps"},
+        ),
+        _fn(
+            "table2_azimuth_drift",
+            (s.t, s.eps_z, s.v_x, s.v_y, s.omega0),
+            tuple(t2["T2.5"]),
+            "Table 2 row 5, derived: azimuth drift eps_z, (dx, dy) = (eps_z/2)(v_y, -v_x)\n"
+            "    [t^2 - 2(1 - cos omega0 t)/omega0^2] (the paper's eps'_z is eps_z/2).\n"
+            "    Returns (dx, dy); the error is sqrt(dx^2 + dy^2).",
+            {s.eps_z: "eps_z", s.v_x: "vx", s.v_y: "vy"},
+        ),
+        _fn(
+            "table2_initial_velocity",
+            (s.t, s.dxdot0, s.omega0),
+            t2["T2.6"],
+            "Table 2 row 6: initial velocity error, dv0/omega0 sin omega0 t.",
+            {s.dxdot0: "dv0"},
+        ),
+        _fn(
+            "table2_initial_azimuth",
+            (s.t, s.phi_z0, s.v_y, s.omega0),
+            t2["T2.7"],
+            "Table 2 row 7: initial azimuth error, phi_z0 v_cross (t - sin(omega0 t)/omega0).",
+            {s.phi_z0: "phi_z0", s.v_y: "v_cross"},
+        ),
+    ]
+    return fns
+
+
+def source() -> str:
+    """The module source text."""
+    return render_module(functions(), HEADER)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--out", type=Path, default=OUTPUT, help="module to write")
+    parser.add_argument("--check", action="store_true", help="fail if --out is stale")
+    args = parser.parse_args(argv)
+    text = source()
+    if args.check:
+        current = args.out.read_text(encoding="utf-8") if args.out.exists() else ""
+        if current != text:
+            print(
+                f"{args.out} is stale: run python -m derivations.platform_drift.generate",
+                file=sys.stderr,
+            )
+            return 1
+        return 0
+    write_module(args.out, text)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,305 @@
+"""Numeric code of the stable-platform gyro-drift paper, generated from derivations/platform_drift.
+
+Regenerate: python -m derivations.platform_drift.generate
+Conventions: SI units, angles in rad, rates in rad/s; lat is the latitude phi_i of the mass
+navigation frame m_N (north, west, up); every function broadcasts its arguments. Where the
+paper prints an equation that differs from the derivation, the derived form is generated.
+
+GENERATED FILE: do not edit; regenerate with the command above.
+"""
+# ruff: noqa
+
+import numpy as np
+
+
+def _broadcast(*outs):
+    """Broadcast the outputs of a vector function to one common shape."""
+    arrays = np.broadcast_arrays(*(np.asarray(o, dtype=float) for o in outs))
+    return tuple(np.array(a) for a in arrays)
+
+__all__ = ['motion_rates', 'gravity_spherical', 'platform_commands_rates', 'oscillation_rates', 'position_rates', 'specific_force_platform', 'specific_force_platform_linear', 'specific_force_stationary', 'tilt_kinematics_stationary', 'k_sh_stationary', 'alpha_deflection', 'alignment_tilts', 'r_alignment', 'nav_initial_tilt_rates', 'error_ch1', 'error_ch3', 'schuler_period', 'table2_accel_bias', 'table2_initial_tilt', 'table2_scale_factor', 'table2_gyro_drift', 'table2_azimuth_drift', 'table2_initial_velocity', 'table2_initial_azimuth']
+
+
+def motion_rates(x, y, z, u, v, w, p, q, r, f1, f2, f3, g1, g2, g3):
+    """Navigation equations in the platform frame s (eqs. 9 and 11):
+    x_dot = r y - q z + u, ..., u_dot = r v - q w + f1 + g1, ...
+    Returns (x_dot, y_dot, z_dot, u_dot, v_dot, w_dot)."""
+    out0 = -q*z + r*y + u
+    out1 = p*z - r*x + v
+    out2 = -p*y + q*x + w
+    out3 = f1 + g1 - q*w + r*v
+    out4 = f2 + g2 + p*w - r*u
+    out5 = f3 + g3 - p*v + q*u
+    return _broadcast(out0, out1, out2, out3, out4, out5)
+
+
+def gravity_spherical(x, y, z, GM):
+    """Spherical mass attraction -GM r / |r|^3 in s (the gravity model of eq. 15).
+    Returns (g1, g2, g3)."""
+    _x0 = GM/(x**2 + y**2 + z**2)**(3/2)
+    out0 = -_x0*x
+    out1 = -_x0*y
+    out2 = -_x0*z
+    return _broadcast(out0, out1, out2)
+
+
+def platform_commands_rates(f1, f2, z):
+    """Position-independent torquing commands (eq. 12): p_dot = -f2/z, q_dot = f1/z.
+    Derived as the rates that keep a level platform level. Returns (p_dot, q_dot)."""
+    _x0 = z**(-1.0)
+    out0 = -_x0*f2
+    out1 = _x0*f1
+    return _broadcast(out0, out1)
+
+
+def oscillation_rates(omega_x, omega_y, phi_x, phi_y, p, q, r, p_dot, q_dot, z, z_dot, R_G, GM):
+    """Platform oscillation ODEs (eq. 15, spherical gravity), with omega_y = u/z,
+    omega_x = -v/z, phi_y = -x/R_G, phi_x = y/R_G (eqs. 13-14).
+    Returns (omega_x_dot, omega_y_dot, phi_x_dot, phi_y_dot)."""
+    _x0 = z**(-1.0)
+    _x1 = _x0*z_dot
+    _x2 = omega_y*z
+    _x3 = R_G*phi_x
+    _x4 = R_G*phi_y
+    _x5 = _x3*p + _x4*q + z_dot
+    _x6 = R_G**2
+    _x7 = GM/(_x6*phi_x**2 + _x6*phi_y**2 + z**2)**(3/2)
+    _x8 = omega_x*z
+    _x9 = R_G**(-1.0)
+    out0 = -_x0*(-_x2*r - _x3*_x7 + _x5*p - p_dot*z) - _x1*omega_x
+    out1 = _x0*(_x4*_x7 - _x5*q - _x8*r + q_dot*z) - _x1*omega_y
+    out2 = _x9*(_x4*r - _x8 + p*z)
+    out3 = -_x9*(_x2 + _x3*r - q*z)
+    return _broadcast(out0, out1, out2, out3)
+
+
+def position_rates(p_m, q_m, r_m, lat, psi, omega_e):
+    """Explicit form of the position equation (eq. 16, derived; the printed matrix form has
+    C psi for S psi in -^{m_i} omega_ie): (lambda_dot + omega_e) cos(lat) =
+    cos psi p_m - sin psi q_m, lat_dot = sin psi p_m + cos psi q_m,
+    psi_dot = r_m - (lambda_dot + omega_e) sin(lat). The algorithm uses p_m = omega_x,
+    q_m = omega_y, r_m = 0. Singular at the poles. Returns (lon_dot, lat_dot, psi_dot)."""
+    _x0 = np.cos(lat)
+    _x1 = np.sin(psi)
+    _x2 = _x1*q_m
+    _x3 = np.cos(psi)
+    _x4 = np.tan(lat)
+    out0 = (-_x0*omega_e - _x2 + _x3*p_m)/_x0
+    out1 = _x1*p_m + _x3*q_m
+    out2 = _x2*_x4 - _x3*_x4*p_m + r_m
+    return _broadcast(out0, out1, out2)
+
+
+def specific_force_platform(R, g, omega_e, lat, lat_dot, lat_ddot, lon_dot, lon_ddot, psi, phi_x, phi_y):
+    """Specific force on the platform of a vehicle moving on a sphere of radius R with
+    Earth rate (exact in the tilts; eq. 17 is its first-order form). g is the mass
+    gravity g_i. Returns (f1, f2, f3)."""
+    _x0 = np.sin(psi)
+    _x1 = np.cos(phi_y)
+    _x2 = np.cos(lat)
+    _x3 = R*_x2
+    _x4 = 2*lon_dot
+    _x5 = np.sin(lat)
+    _x6 = R*_x5*lat_dot
+    _x7 = -_x3*lon_ddot + _x4*_x6 + 2*_x6*omega_e
+    _x8 = np.cos(psi)
+    _x9 = lon_dot**2
+    _x10 = _x3*_x5
+    _x11 = omega_e**2
+    _x12 = _x4*omega_e
+    _x13 = R*lat_ddot + _x10*_x11 + _x10*_x12 + _x10*_x9
+    _x14 = np.sin(phi_y)
+    _x15 = R*_x2**2
+    _x16 = -R*lat_dot**2 - _x11*_x15 - _x12*_x15 - _x15*_x9 + g
+    _x17 = np.cos(phi_x)
+    _x18 = _x17*_x8
+    _x19 = np.sin(phi_x)
+    _x20 = _x0*_x19
+    _x21 = _x1*_x16
+    _x22 = _x19*_x8
+    out0 = _x0*_x1*_x7 + _x1*_x13*_x8 - _x14*_x16
+    out1 = _x13*(-_x0*_x17 + _x14*_x22) + _x19*_x21 + _x7*(_x14*_x20 + _x18)
+    out2 = _x13*(_x14*_x18 + _x20) + _x17*_x21 + _x7*(_x0*_x14*_x17 - _x22)
+    return _broadcast(out0, out1, out2)
+
+
+def specific_force_platform_linear(R, g, omega_e, lat, lat_dot, lat_ddot, lon_dot, lon_ddot, psi, phi_x, phi_y):
+    """Eq. 17 derived (first order in the tilts; the printed Coriolis term squares
+    (lambda_dot + omega_e), which is a typo). Returns (f1, f2)."""
+    _x0 = np.cos(psi)
+    _x1 = R*lat_ddot
+    _x2 = R*lat_dot**2
+    _x3 = np.sin(psi)
+    _x4 = np.cos(lat)
+    _x5 = R*_x4
+    _x6 = _x5*lon_ddot
+    _x7 = 2*lon_dot
+    _x8 = np.sin(lat)
+    _x9 = R*_x3*_x8*lat_dot
+    _x10 = lon_dot**2
+    _x11 = R*_x4**2
+    _x12 = _x11*phi_y
+    _x13 = omega_e**2
+    _x14 = _x7*omega_e
+    _x15 = _x5*_x8
+    _x16 = _x0*_x15
+    _x17 = _x11*phi_x
+    _x18 = _x15*_x3
+    out0 = _x0*_x1 + _x10*_x12 + _x10*_x16 + _x12*_x13 + _x12*_x14 + _x13*_x16 + _x14*_x16 + _x2*phi_y - _x3*_x6 + _x7*_x9 + 2*_x9*omega_e - g*phi_y
+    out1 = 2*R*_x0*_x8*lat_dot*lon_dot + 2*R*_x0*_x8*lat_dot*omega_e - _x0*_x6 - _x1*_x3 - _x10*_x17 - _x10*_x18 - _x13*_x17 - _x13*_x18 - _x14*_x17 - _x14*_x18 - _x2*phi_x + g*phi_x
+    return _broadcast(out0, out1)
+
+
+def specific_force_stationary(R, g, omega_e, lat, psi, phi_x, phi_y):
+    """Eq. 18: the specific force of eq. 17 for a vehicle at rest. Returns (f1, f2)."""
+    _x0 = np.cos(lat)
+    _x1 = R*omega_e**2
+    _x2 = _x0**2*_x1
+    _x3 = _x0*_x1*np.sin(lat)
+    out0 = _x2*phi_y + _x3*np.cos(psi) - g*phi_y
+    out1 = -_x2*phi_x - _x3*np.sin(psi) + g*phi_x
+    return _broadcast(out0, out1)
+
+
+def tilt_kinematics_stationary(p, q, r, phi_x, phi_y, psi, lat, omega_e):
+    """Eq. 19: tilt and azimuth kinematics of the platform at rest, first order in the tilts.
+    Returns (phi_x_dot, phi_y_dot, psi_dot)."""
+    _x0 = omega_e*np.cos(lat)
+    _x1 = _x0*np.cos(psi)
+    out0 = -_x1 + p + phi_y*r
+    out1 = _x0*np.sin(psi) - phi_x*r + q
+    out2 = -_x1*phi_y - omega_e*np.sin(lat) + phi_x*q + r
+    return _broadcast(out0, out1, out2)
+
+
+def k_sh_stationary(g, R, omega_e, lat):
+    """Schuler-like constant k_sh of eq. 28 at rest: g/R - omega_e^2 cos^2(lat)
+    (the vertical specific force over R)."""
+    out0 = -omega_e**2*np.cos(lat)**2 + g/R
+    return out0
+
+
+def alpha_deflection(R, omega_e, lat, g):
+    """Plumb-line deflection alpha of eq. 21 (eq. 1's alpha_T to first order):
+    R omega_e^2 sin(lat) cos(lat) / g."""
+    out0 = R*omega_e**2*np.sin(lat)*np.cos(lat)/g
+    return out0
+
+
+def alignment_tilts(R, omega_e, lat, psi, g, b_a1, b_a2):
+    """Tilts at the end of alignment (eq. 20, derived: the printed form swaps sin/cos psi).
+    Returns (phi_x, phi_y)."""
+    _x0 = np.cos(lat)
+    _x1 = R*omega_e**2
+    _x2 = _x0*_x1*np.sin(lat)
+    _x3 = (_x0**2*_x1 - g)**(-1.0)
+    out0 = -_x3*(_x2*np.sin(psi) + b_a2)
+    out1 = -_x3*(_x2*np.cos(psi) - b_a1)
+    return _broadcast(out0, out1)
+
+
+def r_alignment(omega_e, lat, psi, alpha, theta_F1, theta_F2):
+    """Platform rate about axis 3 at the end of alignment, r(0-) (eq. 24, derived: includes
+    + alpha omega_e cos(lat), which the paper drops)."""
+    _x0 = np.sin(psi)
+    _x1 = omega_e*np.cos(lat)
+    _x2 = np.cos(psi)
+    _x3 = _x1*alpha
+    out0 = _x0**2*_x3 + _x0*_x1*theta_F2 - _x1*_x2*theta_F1 + _x2**2*_x3 + omega_e*np.sin(lat)
+    return out0
+
+
+def nav_initial_tilt_rates(b_g1, b_g2, b_g3, r_0m, phi_x, phi_y):
+    """Tilt rates at the start of navigation (eq. 27): (phi_x_dot(0+), phi_y_dot(0+))."""
+    out0 = b_g1 + b_g3*phi_y - phi_y*r_0m
+    out1 = b_g2 - b_g3*phi_x + phi_x*r_0m
+    return _broadcast(out0, out1)
+
+
+def error_ch1(t, b_g1, k_sh):
+    """Position error angle (rad) for a constant level-gyro drift b_g1 at rest (eq. 32):
+    |b_g1| (t - sin(sqrt(k_sh) t) / sqrt(k_sh)). Multiply by R for distance."""
+    _x0 = np.sqrt(k_sh)
+    out0 = abs(b_g1*t - b_g1*np.sin(_x0*t)/_x0)
+    return out0
+
+
+def error_ch3(t, b_g3, omega_e, lat0, psi0, k_sh, alpha):
+    """Integrated rate errors (int p_merror, int q_merror) in rad for a constant azimuth-gyro
+    drift b_g3 at rest (eq. 36, derived: the first term of int q_merror is
+    -alpha sin(psi0) b_g3 sin(sqrt(k_sh) t)/sqrt(k_sh); the paper prints '+').
+    Requires omega_e^2 sin^2(lat0) != k_sh."""
+    _x0 = np.cos(psi0)
+    _x1 = np.sqrt(k_sh)
+    _x2 = _x1*t
+    _x3 = np.sin(_x2)
+    _x4 = _x1**(-1.0)
+    _x5 = _x4*b_g3
+    _x6 = _x3*_x5*alpha
+    _x7 = np.sin(lat0)
+    _x8 = _x7*omega_e
+    _x9 = _x3*_x8
+    _x10 = np.sin(psi0)
+    _x11 = np.cos(_x2)
+    _x12 = _x8*t - psi0
+    _x13 = (_x7**2*omega_e**2 - k_sh)**(-1.0)
+    _x14 = np.cos(lat0)
+    out0 = _x0*_x6 + _x13*_x14*_x5*omega_e*(-_x0*_x9 + _x1*(_x10*_x11 + np.sin(_x12)))
+    out1 = -_x10*_x6 + _x13*_x14*_x4*b_g3*omega_e*(_x1*(_x0*_x11 - np.cos(_x12)) + _x10*_x9)
+    return _broadcast(out0, out1)
+
+
+def schuler_period(g, R):
+    """Schuler period 2 pi / sqrt(g / R) (eq. 30 with k_sh = g/R)."""
+    out0 = 2*np.pi*np.sqrt(R)/np.sqrt(g)
+    return out0
+
+
+def table2_accel_bias(t, B, omega0):
+    """Table 2 row 1: accelerometer bias, B/omega0^2 (1 - cos omega0 t)."""
+    out0 = B*(1 - np.cos(omega0*t))/omega0**2
+    return out0
+
+
+def table2_initial_tilt(t, phi0, R0, omega0):
+    """Table 2 row 2: initial tilt, -R0 phi0 (1 - cos omega0 t)."""
+    out0 = R0*phi0*(np.cos(omega0*t) - 1)
+    return out0
+
+
+def table2_scale_factor(t, k, dV, omega0):
+    """Table 2 row 3: scale factor k and velocity change dV at t = 0, k dV/omega0 sin omega0 t."""
+    out0 = dV*k*np.sin(omega0*t)/omega0
+    return out0
+
+
+def table2_gyro_drift(t, eps, R0, omega0):
+    """Table 2 row 4: level gyro drift, -R0 eps (t - sin(omega0 t)/omega0)."""
+    _x0 = omega0*t
+    out0 = R0*eps*(-_x0 + np.sin(_x0))/omega0
+    return out0
+
+
+def table2_azimuth_drift(t, eps_z, vx, vy, omega0):
+    """Table 2 row 5, derived: azimuth drift eps_z, (dx, dy) = (eps_z/2)(v_y, -v_x)
+    [t^2 - 2(1 - cos omega0 t)/omega0^2] (the paper's eps'_z is eps_z/2).
+    Returns (dx, dy); the error is sqrt(dx^2 + dy^2)."""
+    _x0 = omega0**2
+    _x1 = _x0*t**2 + 2*np.cos(omega0*t) - 2
+    _x2 = (1/2)*eps_z/_x0
+    out0 = _x1*_x2*vy
+    out1 = -_x1*_x2*vx
+    return _broadcast(out0, out1)
+
+
+def table2_initial_velocity(t, dv0, omega0):
+    """Table 2 row 6: initial velocity error, dv0/omega0 sin omega0 t."""
+    out0 = dv0*np.sin(omega0*t)/omega0
+    return out0
+
+
+def table2_initial_azimuth(t, phi_z0, v_cross, omega0):
+    """Table 2 row 7: initial azimuth error, phi_z0 v_cross (t - sin(omega0 t)/omega0)."""
+    _x0 = omega0*t
+    out0 = phi_z0*v_cross*(_x0 - np.sin(_x0))/omega0
+    return out0

@@ -1,0 +1,225 @@
+"""The stable platform and the paper's position-independent navigation algorithm (Sec. 3).
+
+Two coupled systems are integrated together, for several drift cases at once (the
+cases are an array axis):
+
+**The physical platform.** Its frame s turns, relative to inertial space, at the commanded
+rates plus the gyro drift: ``omega_is^s = [p, q, r] + [b_g1, b_g2, b_g3]`` with ``r = 0``
+in navigation (eq. 25). Its attitude ``C_s^i`` (columns = platform axes in inertial
+coordinates) is integrated as a direction-cosine matrix, ``dC/dt = C [omega x]``. The
+accelerometers measure the true specific force resolved in s: ``f = C^T (a_i - g_i)``.
+
+**The algorithm** (Fig. 2), which only sees ``f`` and the known altitude:
+
+* commands, eq. 12: ``p_dot = -f2/z``, ``q_dot = +f1/z``; ``r = 0`` (eq. 25);
+  (eqs. 12, 15, 16 and the measured specific force, eq. 17, are the generated functions of
+  ``pipeline.generated.platform_drift``; this module only wires them together);
+* platform oscillation, eq. 15 (eqs. 9, 11 rewritten with the definitions of eqs. 13, 14:
+  ``omega_y = u/z``, ``omega_x = -v/z``, ``phi_y = -x/R_G``, ``phi_x = y/R_G``);
+* known altitude (vertical channel): ``|r_EB| = rho`` (true radius), so
+  ``z = sqrt(rho^2 - x^2 - y^2)`` and ``z_dot = -(x x_dot + y y_dot)/z`` (constant altitude);
+  ``R_G = rho``, so D of eq. 15 is exactly 1;
+* position, eq. 16 explicit form with ``p_m = omega_x``, ``q_m = omega_y``, ``r_m = 0``::
+
+      (lon_dot + omega_e) cos(lat) = cos(psi) p_m - sin(psi) q_m
+      lat_dot = sin(psi) p_m + cos(psi) q_m
+      psi_dot = -(lon_dot + omega_e) sin(lat) + r_m
+
+A diagnostic copy of eq. 16 with ``r_m`` equal to the platform's true azimuth rate
+(``b_g3``) is carried along: it isolates the tilt-induced rate errors that the paper's
+analysis (eqs. 33-36) models from the azimuth error that it leaves out.
+
+State per case (21): C_s^i (9, row-major), p, q, omega_x, omega_y, phi_x, phi_y,
+lat, lon, psi, and the diagnostic lat, lon, psi.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from pipeline.generated import platform_drift as gen
+from pipeline.platform_drift.trajectory import Trajectory, c3
+
+__all__ = ["InitialState", "initial_state", "simulate", "N_STATE"]
+
+N_STATE = 21
+
+
+@dataclass(frozen=True)
+class InitialState:
+    """End-of-alignment state shared by the truth platform and the algorithm."""
+
+    c_si: np.ndarray  # 3x3 platform attitude C_s^i
+    p: float
+    q: float
+    omega_x: float
+    omega_y: float
+    phi_x: float
+    phi_y: float
+    lat: float
+    lon: float
+    psi: float
+
+
+def initial_state(traj: Trajectory, level: str) -> InitialState:
+    """Ideal end of alignment at t = 0.
+
+    ``level = 'mass'``: the platform's axis 3 is along the radius (the mass vertical of the
+    paper's spherical gravity), i.e. phi_x = phi_y = 0; ``'plumb'``: axis 3 along the
+    apparent vertical (the specific force at t = 0), the state the paper's alignment ends in
+    (eqs. 20, 21: phi ~ alpha). Axis 1 is at azimuth psi0 (north toward west).
+    p0, q0 are the platform-axis components of the inertial rate of the local NWU frame
+    (the rates that keep the platform at rest relative to the local vertical);
+    omega_x0, omega_y0 follow from eq. 13 with the true inertial velocity.
+    """
+    tr = traj.at(0.0)
+    nwu = tr.nwu_i
+    if level == "mass":
+        c_si = nwu @ c3(traj.psi0)
+    elif level == "plumb":
+        up = tr.f_i / np.linalg.norm(tr.f_i)
+        a1 = nwu @ np.array([np.cos(traj.psi0), np.sin(traj.psi0), 0.0])
+        a1 = a1 - up * (a1 @ up)
+        a1 /= np.linalg.norm(a1)
+        c_si = np.column_stack((a1, np.cross(up, a1), up))
+    else:
+        raise ValueError(f"unknown initial level {level!r}")
+    w_i = nwu @ tr.w_nwu
+    p0, q0, _ = c_si.T @ w_i
+    x, y, z = c_si.T @ tr.r_i
+    u, v, _ = c_si.T @ tr.v_i
+    rg = traj.rho
+    c_s_mn = nwu.T @ c_si  # C_s^{mN}
+    psi = float(np.arctan2(c_s_mn[1, 0], c_s_mn[0, 0]))
+    return InitialState(
+        c_si=c_si,
+        p=float(p0),
+        q=float(q0),
+        omega_x=float(-v / z),
+        omega_y=float(u / z),
+        phi_x=float(y / rg),
+        phi_y=float(-x / rg),
+        lat=tr.lat,
+        lon=tr.lon,
+        psi=psi,
+    )
+
+
+def _y0(init: InitialState, n_cases: int) -> np.ndarray:
+    row = np.concatenate(
+        [
+            init.c_si.ravel(),
+            [init.p, init.q, init.omega_x, init.omega_y, init.phi_x, init.phi_y],
+            [init.lat, init.lon, init.psi, init.lat, init.lon, init.psi],
+        ]
+    )
+    return np.tile(row, n_cases)
+
+
+def _atol(n_cases: int) -> np.ndarray:
+    # DCM 1e-14; rates (~1e-4 rad/s) 1e-19 rad/s; tilts 1e-15 rad; angles 1e-14 rad
+    row = np.concatenate(
+        [np.full(9, 1e-14), np.full(4, 1e-19), np.full(2, 1e-15), np.full(6, 1e-14)]
+    )
+    return np.tile(row, n_cases)
+
+
+def make_rhs(traj: Trajectory, drift: np.ndarray):
+    """RHS of the coupled platform + algorithm system for drifts ``drift`` (n_cases x 3)."""
+    drift = np.asarray(drift, dtype=float)
+    n = drift.shape[0]
+    rg = traj.rho
+    gm, omega_e = traj.earth.gm, traj.earth.omega_e
+    r_cmd = 0.0  # eq. 25: the third gyro is commanded zero in navigation
+    r_m_diag = drift[:, 2]  # diagnostic: eq. 16 told the platform's true azimuth rate
+
+    def rhs(t: float, y: np.ndarray) -> np.ndarray:
+        tr = traj.at(t)
+        rho = traj.rho  # known altitude
+        Y = y.reshape(n, N_STATE)
+        C = Y[:, :9].reshape(n, 3, 3)
+        p, q, wx, wy, fx, fy = Y[:, 9:15].T
+        lat, psi = Y[:, 15], Y[:, 17]
+        lat2, psi2 = Y[:, 18], Y[:, 20]
+        # accelerometers: true specific force in the physical platform frame
+        f = traj.specific_force_in(tr, C)
+        # algorithm: known altitude gives z (eq. 14 for x, y)
+        x, yy = -rg * fy, rg * fx
+        z = np.sqrt(rho * rho - x * x - yy * yy)
+        p_dot, q_dot = gen.platform_commands_rates(f[:, 0], f[:, 1], z)  # eq. 12
+        r = r_cmd
+        # eq. 15: the tilt rates do not depend on z_dot; z_dot follows from them
+        _, _, fx_dot, fy_dot = gen.oscillation_rates(
+            wx, wy, fx, fy, p, q, r, p_dot, q_dot, z, 0.0, rg, gm
+        )
+        z_dot = -(x * (-rg * fy_dot) + yy * (rg * fx_dot)) / z
+        wx_dot, wy_dot, _, _ = gen.oscillation_rates(
+            wx, wy, fx, fy, p, q, r, p_dot, q_dot, z, z_dot, rg, gm
+        )
+        out = np.empty_like(Y)
+        # eq. 16 with p_m = omega_x, q_m = omega_y, r_m = 0 (and the diagnostic r_m = b_g3)
+        for col, la, ps, r_m in ((15, lat, psi, 0.0), (18, lat2, psi2, r_m_diag)):
+            lon_dot, lat_dot, psi_dot = gen.position_rates(wx, wy, r_m, la, ps, omega_e)
+            out[:, col] = lat_dot
+            out[:, col + 1] = lon_dot
+            out[:, col + 2] = psi_dot
+        # physical platform: commanded rates plus drift
+        w = np.column_stack((p, q, np.full(n, r_cmd))) + drift
+        wx_m = np.zeros((n, 3, 3))
+        wx_m[:, 0, 1], wx_m[:, 0, 2] = -w[:, 2], w[:, 1]
+        wx_m[:, 1, 0], wx_m[:, 1, 2] = w[:, 2], -w[:, 0]
+        wx_m[:, 2, 0], wx_m[:, 2, 1] = -w[:, 1], w[:, 0]
+        out[:, :9] = (C @ wx_m).reshape(n, 9)
+        out[:, 9] = p_dot
+        out[:, 10] = q_dot
+        out[:, 11] = wx_dot
+        out[:, 12] = wy_dot
+        out[:, 13] = fx_dot
+        out[:, 14] = fy_dot
+        return out.ravel()
+
+    return rhs
+
+
+def simulate(
+    traj: Trajectory,
+    drift: np.ndarray,
+    t_eval: np.ndarray,
+    level: str = "mass",
+    rtol: float = 1e-10,
+) -> dict[str, np.ndarray]:
+    """Integrate platform + algorithm for each drift row; computed positions at ``t_eval``.
+
+    Returns ``lat``, ``lon`` (algorithm, eq. 16), ``lat_diag``, ``lon_diag`` (eq. 16 with
+    the true azimuth rate), ``psi`` and ``psi_diag``, each (n_cases, len(t_eval)), plus
+    ``nfev``.
+    """
+    drift = np.atleast_2d(np.asarray(drift, dtype=float))
+    n = drift.shape[0]
+    init = initial_state(traj, level)
+    sol = solve_ivp(
+        make_rhs(traj, drift),
+        (float(t_eval[0]), float(t_eval[-1])),
+        _y0(init, n),
+        method="DOP853",
+        t_eval=t_eval,
+        rtol=rtol,
+        atol=_atol(n),
+    )
+    if not sol.success:
+        raise RuntimeError(f"platform integration failed: {sol.message}")
+    Y = sol.y.reshape(n, N_STATE, -1)
+    return {
+        "lat": Y[:, 15],
+        "lon": Y[:, 16],
+        "psi": Y[:, 17],
+        "lat_diag": Y[:, 18],
+        "lon_diag": Y[:, 19],
+        "psi_diag": Y[:, 20],
+        "phi_x": Y[:, 13],
+        "phi_y": Y[:, 14],
+        "nfev": np.array(sol.nfev),
+    }

@@ -1,0 +1,263 @@
+"""Run one platform-drift scenario and write its results directory.
+
+Writes, under ``results/platform_drift/<scenario>/``:
+
+* ``errors.csv`` (``ERRORS_COLUMNS``): position error (m) every ``output_step_s`` from 0 to
+  ``duration_s`` for every drift case and three schemes:
+
+  - ``proposed_simulated``: nonlinear simulation of the stable platform and of the paper's
+    position-independent algorithm (eqs. 9-16, 25; :mod:`platform`);
+  - ``proposed_analytic``: the paper's analysis, eqs. 32 and 36, from the generated code
+    (:mod:`analytic`);
+  - ``strapdown``: nonlinear NED strapdown INS with the same gyro drifts (:mod:`strapdown`);
+
+* ``errors_diagnostic.csv`` (same columns, scheme ``proposed_true_azimuth``): the platform
+  simulation with eq. 16 told the platform's true azimuth rate (r_m = b_g3), i.e. only the
+  tilt-induced rate errors that eqs. 33-36 model;
+* ``errors_long.csv`` and ``errors_long_diagnostic.csv``: the same over ``long_duration_s``
+  when the scenario has one (the stationary 24 h run);
+* ``summary.csv`` (``SUMMARY_COLUMNS``): per case and scheme the error at ``duration_s``
+  (``error_2h_m``), the largest error, and ``crossover_s``. For the rows of
+  ``proposed_simulated`` and ``strapdown`` it is the first output time t >= 300 s at which
+  the strapdown error exceeds the proposed_simulated error by more than 1 m (so that two
+  coinciding curves do not "cross" on numerical noise); for the rows of
+  ``proposed_analytic`` and ``proposed_true_azimuth`` the same with that scheme in place of
+  proposed_simulated; NaN if it never does;
+* ``provenance.json``: code version, config and generated-module hashes, packages,
+  integrator, function-evaluation counts, derived constants and no-drift error floors.
+  No wall times (the files are reproducible bit for bit; there are no random numbers).
+
+Usage::
+
+    python -m pipeline.platform_drift.run --scenario config/scenarios/platform_drift/stationary.yaml \
+        --out-dir results/platform_drift/stationary
+    python -m pipeline.platform_drift.run --all    # every scenario into results/platform_drift/<name>
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from pipeline.atomic import write_csv, write_json
+from pipeline.columns import DRIFT_SUMMARY_COLUMNS, ERRORS_COLUMNS
+from pipeline.platform_drift import analytic
+from pipeline.platform_drift import platform as pf
+from pipeline.platform_drift import strapdown as sd
+from pipeline.platform_drift.scenario import ROOT, Scenario, load_scenario
+from pipeline.platform_drift.trajectory import haversine
+
+__all__ = [
+    "ERRORS_COLUMNS",
+    "CROSSOVER_AFTER_S",
+    "CROSSOVER_MARGIN_M",
+    "SUMMARY_COLUMNS",
+    "SCHEMES",
+    "DIAGNOSTIC_SCHEME",
+    "simulate_errors",
+    "summary_frame",
+    "crossover",
+    "run_scenario",
+    "main",
+]
+
+# column lists: pipeline/columns.py (ERRORS_COLUMNS, DRIFT_SUMMARY_COLUMNS)
+SUMMARY_COLUMNS = DRIFT_SUMMARY_COLUMNS
+SCHEMES = ("proposed_simulated", "proposed_analytic", "strapdown")
+DIAGNOSTIC_SCHEME = "proposed_true_azimuth"
+CROSSOVER_AFTER_S = 300.0
+# "exceeds" means by more than this: far above the no-drift floors (< 0.1 mm) so that
+# numerical noise between two coinciding curves does not count as a crossover
+CROSSOVER_MARGIN_M = 1.0
+SCENARIO_DIR = ROOT / "config" / "scenarios" / "platform_drift"
+RESULTS_DIR = ROOT / "results" / "platform_drift"
+GENERATED = ROOT / "pipeline" / "generated" / "platform_drift.py"
+
+
+def _long(t: np.ndarray, curves: dict[tuple[str, str], np.ndarray]) -> pd.DataFrame:
+    parts = [
+        pd.DataFrame({"t_s": t, "case": case, "scheme": scheme, "error_m": err})
+        for (case, scheme), err in curves.items()
+    ]
+    return pd.concat(parts, ignore_index=True)[ERRORS_COLUMNS]
+
+
+def simulate_errors(
+    sc: Scenario, duration: float, log=print
+) -> tuple[pd.DataFrame, pd.DataFrame, dict]:
+    """Errors of every case and scheme over ``duration``; (errors, diagnostic, info)."""
+    traj = sc.trajectory()
+    t = sc.times(duration)
+    lat_true, lon_true = traj.latlon(t)
+    radius = sc.earth.radius
+    p_drift = np.array([sc.platform_drift(c) for c in sc.cases])
+    s_drift = np.array([sc.strapdown_drift(c) for c in sc.cases])
+
+    t0 = time.perf_counter()
+    plat = pf.simulate(traj, p_drift, t, sc.initial_level, sc.rtol)
+    t1 = time.perf_counter()
+    strap = sd.simulate(traj, s_drift, t, sc.rtol)
+    t2 = time.perf_counter()
+    log(
+        f"{sc.name}: {duration:g} s, {len(sc.cases)} cases: platform {t1 - t0:.2f} s "
+        f"({int(plat['nfev'])} evaluations), strapdown {t2 - t1:.2f} s "
+        f"({int(strap['nfev'])} evaluations)"
+    )
+
+    curves, diag = {}, {}
+    for i, case in enumerate(sc.cases):
+        curves[case, "proposed_simulated"] = radius * haversine(
+            lat_true, lon_true, plat["lat"][i], plat["lon"][i]
+        )
+        curves[case, "proposed_analytic"] = analytic.error_m(sc, case, t)
+        curves[case, "strapdown"] = radius * haversine(
+            lat_true, lon_true, strap["lat"][i], strap["lon"][i]
+        )
+        diag[case, DIAGNOSTIC_SCHEME] = radius * haversine(
+            lat_true, lon_true, plat["lat_diag"][i], plat["lon_diag"][i]
+        )
+    info = {"nfev_platform": int(plat["nfev"]), "nfev_strapdown": int(strap["nfev"])}
+    if "none" in sc.cases:
+        info["no_drift_floor_m"] = {
+            "proposed_simulated": float(curves["none", "proposed_simulated"].max()),
+            "strapdown": float(curves["none", "strapdown"].max()),
+        }
+    ground = [traj.at(float(x)) for x in t[:: max(1, len(t) // 720)]]
+    we = np.array([0.0, 0.0, sc.earth.omega_e])
+    info["max_ground_speed_m_s"] = float(
+        max(np.linalg.norm(g.v_i - np.cross(we, g.r_i)) for g in ground)
+    )
+    return _long(t, curves), _long(t, diag), info
+
+
+def crossover(t: np.ndarray, strap: np.ndarray, other: np.ndarray) -> float:
+    """First time t >= 300 s at which ``strap`` exceeds ``other`` by more than 1 m; NaN if never."""
+    idx = np.flatnonzero((t >= CROSSOVER_AFTER_S) & (strap > other + CROSSOVER_MARGIN_M))
+    return float(t[idx[0]]) if idx.size else float("nan")
+
+
+def summary_frame(errors: pd.DataFrame, diagnostic: pd.DataFrame) -> pd.DataFrame:
+    """One row per case and scheme (SUMMARY_COLUMNS); see the module docstring."""
+    both = pd.concat([errors, diagnostic], ignore_index=True)
+    rows = []
+    for case in dict.fromkeys(both["case"]):
+        sub = both[both["case"] == case]
+        curve = {s: g.sort_values("t_s") for s, g in sub.groupby("scheme", sort=False)}
+        t = curve["strapdown"]["t_s"].to_numpy()
+        strap = curve["strapdown"]["error_m"].to_numpy()
+        prop = curve["proposed_simulated"]["error_m"].to_numpy()
+        for scheme in (*SCHEMES, DIAGNOSTIC_SCHEME):
+            err = curve[scheme]["error_m"].to_numpy()
+            ref = prop if scheme == "strapdown" else err
+            rows.append(
+                {
+                    "case": case,
+                    "scheme": scheme,
+                    "error_2h_m": float(err[-1]),
+                    "error_max_m": float(err.max()),
+                    "crossover_s": crossover(t, strap, ref),
+                }
+            )
+    return pd.DataFrame(rows, columns=SUMMARY_COLUMNS)
+
+
+def _sha256_file(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest() if path.is_file() else "missing"
+
+
+def _relative(path: Path) -> str:
+    try:
+        return str(path.resolve().relative_to(ROOT))
+    except ValueError:
+        return str(path)
+
+
+def run_scenario(
+    scenario: Scenario | str | Path, out_dir: str | Path, log=print
+) -> dict[str, Path]:
+    """Run a scenario (validated first) and write its results atomically into ``out_dir``."""
+    from pipeline.provenance import provenance
+
+    sc = scenario if isinstance(scenario, Scenario) else load_scenario(scenario)
+    out_dir = Path(out_dir)
+    errors, diag, info = simulate_errors(sc, sc.duration, log)
+    written = {
+        "errors": write_csv(out_dir / "errors.csv", errors, ERRORS_COLUMNS),
+        "errors_diagnostic": write_csv(out_dir / "errors_diagnostic.csv", diag, ERRORS_COLUMNS),
+        "summary": write_csv(out_dir / "summary.csv", summary_frame(errors, diag), SUMMARY_COLUMNS),
+    }
+    runs = {"main": {"duration_s": sc.duration, **info}}
+    if sc.long_duration is not None:
+        errors_l, diag_l, info_l = simulate_errors(sc, sc.long_duration, log)
+        written["errors_long"] = write_csv(out_dir / "errors_long.csv", errors_l, ERRORS_COLUMNS)
+        written["errors_long_diagnostic"] = write_csv(
+            out_dir / "errors_long_diagnostic.csv", diag_l, ERRORS_COLUMNS
+        )
+        runs["long"] = {"duration_s": sc.long_duration, **info_l}
+    else:  # no long run: header-only files, so every scenario has the same outputs
+        empty = pd.DataFrame(columns=ERRORS_COLUMNS)
+        written["errors_long"] = write_csv(out_dir / "errors_long.csv", empty, ERRORS_COLUMNS)
+        written["errors_long_diagnostic"] = write_csv(
+            out_dir / "errors_long_diagnostic.csv", empty, ERRORS_COLUMNS
+        )
+    prov = provenance(
+        scenario=sc.name,
+        scenario_file=_relative(sc.path),
+        config_sha256=sc.config_sha256,
+        generated_module=_relative(GENERATED),
+        generated_sha256=_sha256_file(GENERATED),
+        seeds=None,
+        seed_scheme="none: deterministic simulation, no random numbers",
+        integrator={"method": "DOP853", "rtol": sc.rtol, "library": "scipy.integrate.solve_ivp"},
+        constants=analytic.constants(sc),
+        runs=runs,
+    )
+    written["provenance"] = write_json(out_dir / "provenance.json", prov)
+    return written
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
+    group = parser.add_mutually_exclusive_group(required=True)
+    group.add_argument("--scenario", type=Path, help="scenario YAML file")
+    group.add_argument(
+        "--all", action="store_true", help=f"run every scenario in {_relative(SCENARIO_DIR)}"
+    )
+    parser.add_argument("--out-dir", type=Path, help="results directory (with --scenario)")
+    parser.add_argument(
+        "--results-dir",
+        type=Path,
+        default=RESULTS_DIR,
+        help="parent of the per-scenario directories (with --all)",
+    )
+    args = parser.parse_args(argv)
+    if args.scenario is not None and args.out_dir is None:
+        parser.error("--out-dir is required with --scenario")
+
+    def log(message: str) -> None:
+        print(message, file=sys.stderr, flush=True)
+
+    paths = [args.scenario] if args.scenario else sorted(SCENARIO_DIR.glob("*.yaml"))
+    try:  # validate every file before any compute starts
+        scenarios = [load_scenario(p) for p in paths]
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    start = time.perf_counter()
+    for sc in scenarios:
+        out = args.out_dir if args.scenario else args.results_dir / sc.name
+        run_scenario(sc, out, log=log)
+        log(f"{sc.name}: written to {out} ({time.perf_counter() - start:.1f} s elapsed)")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

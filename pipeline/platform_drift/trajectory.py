@@ -1,0 +1,244 @@
+"""Truth trajectory of the platform-drift scenarios: a vehicle on a sphere over the rotating Earth.
+
+The vehicle moves at constant altitude ``h`` on the sphere of radius ``rho = R + h``
+centred on the Earth's centre (spherical Earth, spherical mass gravity GM/r^2). Its
+geocentric latitude and Earth-fixed longitude are linear in one progress variable
+``s(t)`` (0 -> 1)::
+
+    lat(t) = lat0 + dlat * s(t),   lon(t) = lon0 + dlon * s(t)
+
+so that ``dlat = 0`` is a path along a parallel, ``dlon = 0`` a path along a meridian and
+``dlat = dlon = 0`` a vehicle at rest. ``s`` rises with a smooth speed profile: the speed
+grows from zero over ``ramp_s`` seconds with a raised-cosine acceleration (continuous
+acceleration and jerk), stays constant, and falls back to zero over the last ``ramp_s``
+seconds of ``travel_time_s``; after that the vehicle is at rest.
+
+Frames (all right-handed):
+
+* ``i``: inertial, equal to the Earth-fixed frame at t = 0 (z along the Earth's axis);
+  the inertial longitude is ``Lam = lon + omega_e t``.
+* ``NWU``: the paper's m_N frame on a spherical Earth (axis 1 north, 2 west, 3 up along
+  the radius, i.e. along the mass attraction). Its inertial angular rate, in NWU, is
+  ``[Lam_dot cos(lat), lat_dot, Lam_dot sin(lat)]`` (eq. 4 with omega_e + lon_dot).
+* body ``b``: NWU rotated about the up axis by ``psi_b(t) = psi0 - (chi(t) - chi(0))``,
+  where ``chi`` is the course (clockwise from north) of the path, then by a constant
+  mounting rotation ``M`` (identity unless the platform starts plumb-level). The body
+  therefore yaws with the vehicle's course and stays level.
+
+Measurements: :meth:`Trajectory.specific_force_in` gives what accelerometers along any
+frame's axes read, from the generated eq. 17 (``gen.specific_force_platform``, exact in the
+tilts). The inertial ``a_i`` and ``f_i`` computed here are an independent check of it (the
+tests compare the two) and give the plumb direction at t = 0.
+
+Angles: ``psi`` (the paper's azimuth of eq. 2) turns about the up axis from north toward
+west; the course ``chi`` turns from north toward east. Everything is in SI units and rad.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from pipeline.generated import platform_drift as gen
+
+__all__ = ["Earth", "Path", "Truth", "Trajectory", "c3", "haversine"]
+
+
+@dataclass(frozen=True)
+class Earth:
+    """Spherical Earth: radius (m), GM (m^3/s^2), rotation rate (rad/s)."""
+
+    radius: float
+    gm: float
+    omega_e: float
+
+
+@dataclass(frozen=True)
+class Path:
+    """Start point, angular changes and speed profile (rad, m, s)."""
+
+    lat0: float
+    lon0: float
+    altitude: float
+    dlat: float
+    dlon: float
+    travel_time: float
+    ramp: float
+
+
+@dataclass(frozen=True)
+class Truth:
+    """The truth at one instant (inertial-frame vectors as 3-element numpy arrays)."""
+
+    lat: float
+    lon: float
+    lat_dot: float
+    lat_ddot: float
+    lon_dot: float  # Earth-relative longitude rate
+    lon_ddot: float
+    r_i: np.ndarray  # position from the Earth's centre, m
+    v_i: np.ndarray  # inertial velocity, m/s
+    a_i: np.ndarray  # inertial acceleration, m/s^2
+    f_i: np.ndarray  # specific force a - g_mass, m/s^2
+    nwu_i: np.ndarray  # 3x3, columns N, W, U in inertial coordinates
+    w_nwu: np.ndarray  # inertial rate of NWU, in NWU, rad/s
+    psi_b: float  # body azimuth about up (north toward west), rad
+    psi_b_dot: float
+
+
+def c3(psi: float) -> np.ndarray:
+    """The paper's C3(psi) (eq. 2): maps coordinates of a frame turned by +psi about axis 3."""
+    c, s = math.cos(psi), math.sin(psi)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+def haversine(lat1, lon1, lat2, lon2) -> np.ndarray:
+    """Great-circle angle (rad) between two points; exact also for tiny separations."""
+    lat1, lon1, lat2, lon2 = (np.asarray(a, dtype=float) for a in (lat1, lon1, lat2, lon2))
+    h = (
+        np.sin((lat2 - lat1) / 2) ** 2
+        + np.cos(lat1) * np.cos(lat2) * np.sin((lon2 - lon1) / 2) ** 2
+    )
+    return 2 * np.arcsin(np.sqrt(np.clip(h, 0.0, 1.0)))
+
+
+class Trajectory:
+    """Analytic truth kinematics of one scenario."""
+
+    def __init__(self, earth: Earth, path: Path, psi0: float):
+        self.earth = earth
+        self.path = path
+        self.rho = earth.radius + path.altitude
+        self.psi0 = float(psi0)
+        moving = path.dlat != 0.0 or path.dlon != 0.0
+        self.moving = moving
+        tr, tt = path.ramp, path.travel_time
+        # cruise rate of s: the two ramps each cover ramp/2 of cruise-speed time
+        self.s_dot_cruise = 1.0 / (tt - tr) if moving else 0.0
+        self.chi0 = self.course(path.lat0)
+        self.mount = np.eye(3)
+
+    # ---- progress s(t) and its derivatives ---------------------------------------------
+    def progress(self, t: float) -> tuple[float, float, float]:
+        """(s, s_dot, s_ddot) of the smooth speed profile."""
+        if not self.moving:
+            return 0.0, 0.0, 0.0
+        tr, tt, vc = self.path.ramp, self.path.travel_time, self.s_dot_cruise
+        two_pi = 2.0 * math.pi
+        if t <= 0.0:
+            return 0.0, 0.0, 0.0
+        if t >= tt:
+            return 1.0, 0.0, 0.0
+        if t < tr:
+            tau = t / tr
+            s = vc * tr * (tau * tau / 2 + (math.cos(two_pi * tau) - 1) / (2 * two_pi * math.pi))
+            sd = vc * (tau - math.sin(two_pi * tau) / two_pi)
+            sdd = vc * (1 - math.cos(two_pi * tau)) / tr
+            return s, sd, sdd
+        if t > tt - tr:
+            tau = (tt - t) / tr
+            s = 1.0 - vc * tr * (
+                tau * tau / 2 + (math.cos(two_pi * tau) - 1) / (2 * two_pi * math.pi)
+            )
+            sd = vc * (tau - math.sin(two_pi * tau) / two_pi)
+            sdd = -vc * (1 - math.cos(two_pi * tau)) / tr
+            return s, sd, sdd
+        s_ramp = vc * tr / 2
+        return s_ramp + vc * (t - tr), vc, 0.0
+
+    def course(self, lat: float) -> float:
+        """Course chi (clockwise from north) of the path at latitude ``lat``; 0 at rest."""
+        p = self.path
+        if not (p.dlat != 0.0 or p.dlon != 0.0):
+            return 0.0
+        return math.atan2(p.dlon * math.cos(lat), p.dlat)
+
+    def latlon(self, t) -> tuple[np.ndarray, np.ndarray]:
+        """True latitude and longitude (rad) at the times ``t`` (array)."""
+        s = np.array([self.progress(float(x))[0] for x in np.atleast_1d(t)])
+        return self.path.lat0 + self.path.dlat * s, self.path.lon0 + self.path.dlon * s
+
+    # ---- full truth at one instant -------------------------------------------------------
+    def at(self, t: float) -> Truth:
+        p, e = self.path, self.earth
+        rho = self.rho
+        s, sd, sdd = self.progress(t)
+        lat = p.lat0 + p.dlat * s
+        lon = p.lon0 + p.dlon * s
+        lat_d, lat_dd = p.dlat * sd, p.dlat * sdd
+        lam = lon + e.omega_e * t
+        lam_d, lam_dd = p.dlon * sd + e.omega_e, p.dlon * sdd
+        cl, sl = math.cos(lat), math.sin(lat)
+        cL, sL = math.cos(lam), math.sin(lam)
+        up = np.array([cl * cL, cl * sL, sl])
+        north = np.array([-sl * cL, -sl * sL, cl])
+        east = np.array([-sL, cL, 0.0])
+        r_i = rho * up
+        v_i = rho * (lat_d * north + lam_d * cl * east)
+        a_i = rho * (
+            (lat_dd + lam_d * lam_d * sl * cl) * north
+            + (lam_dd * cl - 2.0 * lam_d * lat_d * sl) * east
+            - (lat_d * lat_d + lam_d * lam_d * cl * cl) * up
+        )
+        f_i = a_i + (e.gm / rho**2) * up
+        nwu = np.column_stack((north, -east, up))
+        w_nwu = np.array([lam_d * cl, lat_d, lam_d * sl])
+        # body yaw follows the course: chi_dot = -dlat dlon sin(lat) lat_dot / (dlat^2 + dlon^2 cos^2)
+        chi = self.course(lat)
+        den = p.dlat**2 + (p.dlon * cl) ** 2
+        chi_d = -p.dlat * p.dlon * sl * lat_d / den if den > 0 else 0.0
+        return Truth(
+            lat=lat,
+            lon=lon,
+            lat_dot=lat_d,
+            lat_ddot=lat_dd,
+            lon_dot=p.dlon * sd,
+            lon_ddot=lam_dd,
+            r_i=r_i,
+            v_i=v_i,
+            a_i=a_i,
+            f_i=f_i,
+            nwu_i=nwu,
+            w_nwu=w_nwu,
+            psi_b=self.psi0 - (chi - self.chi0),
+            psi_b_dot=-chi_d,
+        )
+
+    def specific_force_in(self, tr: Truth, c_xi: np.ndarray) -> np.ndarray:
+        """What ideal accelerometers along the axes of frame(s) ``c_xi`` measure (m/s^2).
+
+        ``c_xi`` is C_x^i (3x3, or n x 3 x 3 for n frames). The attitude relative to NWU is
+        split into the paper's C3(psi) C2(phi_y) C1(phi_x) (eq. 2, exact) and the specific
+        force comes from the generated eq. 17 (exact in the tilts):
+        ``gen.specific_force_platform``. Returns (3,) or (n, 3).
+        """
+        c = np.einsum("ji,...jk->...ik", tr.nwu_i, c_xi)  # C_x^{NWU}
+        psi = np.arctan2(c[..., 1, 0], c[..., 0, 0])
+        phi_y = np.arcsin(np.clip(-c[..., 2, 0], -1.0, 1.0))
+        phi_x = np.arctan2(c[..., 2, 1], c[..., 2, 2])
+        e = self.earth
+        f = gen.specific_force_platform(
+            self.rho,
+            e.gm / self.rho**2,
+            e.omega_e,
+            tr.lat,
+            tr.lat_dot,
+            tr.lat_ddot,
+            tr.lon_dot,
+            tr.lon_ddot,
+            psi,
+            phi_x,
+            phi_y,
+        )
+        return np.stack(f, axis=-1)
+
+    def body_i(self, tr: Truth) -> np.ndarray:
+        """C_b^i (columns = body axes in inertial coordinates) for the truth ``tr``."""
+        return tr.nwu_i @ c3(tr.psi_b) @ self.mount
+
+    def body_rate(self, tr: Truth) -> np.ndarray:
+        """True inertial angular rate of the body, in body axes (rad/s)."""
+        w = c3(tr.psi_b).T @ tr.w_nwu + np.array([0.0, 0.0, tr.psi_b_dot])
+        return self.mount.T @ w

@@ -1,0 +1,17 @@
+# Snakemake script: fail if a generated module differs from what its derivations generate.
+# params.generator: the module with source(), e.g. derivations.platform_drift.generate
+import importlib
+import sys
+from pathlib import Path
+
+from pipeline.atomic import write_text
+
+with open(snakemake.log[0], "w") as log:  # noqa: F821
+    sys.stderr = log
+    generator = importlib.import_module(snakemake.params.generator)  # noqa: F821
+    generated = Path(snakemake.input.generated)  # noqa: F821
+    if generated.read_text(encoding="utf-8") != generator.source():
+        raise SystemExit(
+            f"{generated} is stale: run `python -m {generator.__name__}` and commit it"
+        )
+    write_text(snakemake.output[0], f"{generated} is fresh\n")  # noqa: F821

@@ -1,0 +1,71 @@
+"""The committed pipeline/generated/north_finding.py is fresh, and staleness is detected."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+import pytest
+
+from derivations.north_finding import generate
+from pipeline.north_finding.scenario import ROOT
+
+GENERATED = ROOT / "pipeline" / "generated" / "north_finding.py"
+
+
+@pytest.fixture(scope="module")
+def fresh_source() -> str:
+    """The regenerated module text, derived once (~7 s) and shared by the main() calls below."""
+    return generate.source()
+
+
+@pytest.fixture
+def cached_main(monkeypatch, fresh_source):
+    monkeypatch.setattr(generate, "source", lambda: fresh_source)
+    return generate.main
+
+
+def test_committed_generated_module_is_fresh():
+    """``python -m derivations.north_finding.generate --check`` exits 0 on the committed file."""
+    r = subprocess.run(
+        [sys.executable, "-m", "derivations.north_finding.generate", "--check"],
+        cwd=ROOT,
+        env={**os.environ, "PYTHONPATH": str(ROOT)},
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert r.returncode == 0, r.stderr
+
+
+@pytest.mark.parametrize(
+    "edit",
+    [
+        lambda text: text.replace(
+            "out0 = (1/2)*(ax_0 - ax_180)/g", "out0 = (1/2)*(ax_0 + ax_180)/g", 1
+        ),
+        lambda text: text + "\n# a trailing comment\n",
+    ],
+    ids=["formula_changed", "comment_added"],
+)
+def test_modified_copy_is_detected_as_stale(tmp_path, capsys, edit, cached_main):
+    text = GENERATED.read_text(encoding="utf-8")
+    modified = edit(text)
+    assert modified != text
+    stale = tmp_path / "north_finding.py"
+    stale.write_text(modified, encoding="utf-8")
+    assert cached_main(["--check", "--out", str(stale)]) == 1
+    assert "stale" in capsys.readouterr().err
+    assert stale.read_text(encoding="utf-8") == modified  # --check never rewrites
+
+
+def test_unmodified_copy_passes_and_missing_file_is_stale(tmp_path, cached_main, fresh_source):
+    copy = tmp_path / "copy.py"
+    copy.write_text(GENERATED.read_text(encoding="utf-8"), encoding="utf-8")
+    assert cached_main(["--check", "--out", str(copy)]) == 0
+    out = tmp_path / "sub" / "north_finding.py"
+    assert cached_main(["--check", "--out", str(out)]) == 1
+    assert cached_main(["--out", str(out)]) == 0
+    assert out.read_text(encoding="utf-8") == fresh_source
+    assert cached_main(["--check", "--out", str(out)]) == 0
