@@ -42,9 +42,7 @@ def test_bounded_claim_distinguishes_growth_from_oscillation():
         "text": "bounded",
         "predicate": {"type": "bounded", "scenario": "st", "case": "ch3", "ratio": 1.5},
     }
-    long = _frame(
-        {("ch3", "proposed_analytic"): osc, ("ch3", "proposed_simulated"): grow}, T_LONG
-    )
+    long = _frame({("ch3", "proposed_analytic"): osc, ("ch3", "proposed_simulated"): grow}, T_LONG)
     res = {"st": {"errors": _frame({("ch3", "strapdown"): T}), "errors_long": long}}
     out = verdicts(_published([claim]), res).set_index("method")["verdict"]
     assert out["proposed_analytic"] == "upheld"

@@ -85,6 +85,13 @@ def render_page(
             "azimuth rate in eq. 16 (the part of the error eqs. 33-36 model).",
             missing_text=f"Fig. {number} not available",
         )
+    figs += H.figure(
+        results_dir / "figures" / "fig9_latitude.png",
+        alt="Fig. 9",
+        caption="Fig. 9 (not in the paper): the stationary case rerun at latitudes 0-80 deg; "
+        "error at 2 h of each curve. The strapdown channel-3 error scales with cos(latitude).",
+        missing_text="Fig. 9 not available",
+    )
     summaries = ""
     for d in sorted(p for p in results_dir.iterdir() if (p / "summary.csv").is_file()):
         summaries += H.section(
@@ -99,7 +106,7 @@ def render_page(
         ("summary", "Summary", summary),
         ("equation-audit", "Equation audit", audit_body),
         ("verdicts", "Published numbers and claims", H.table(verdicts, class_column="verdict")),
-        ("figures", "Figures 5-8", figs),
+        ("figures", "Figures 5-8 and a latitude sweep", figs),
         ("summaries", "Per-scenario summaries (2 h errors, crossovers)", summaries),
         ("assumptions", "Assumptions", _assumptions(scenarios_dir)),
         ("provenance", "Provenance", prov),

@@ -24,6 +24,7 @@ PD_FIGURES = [
 rule platform_drift_all:
     input:
         f"{REPORTS}/platform_drift.html",
+        f"{REPORTS}/notebooks/platform_drift.html",
 
 
 rule platform_drift_codegen_check:
@@ -117,6 +118,7 @@ rule platform_drift_report:
         verdicts=f"{PD}/verdicts.csv",
         summaries=expand(f"{PD}/{{scenario}}/summary.csv", scenario=PD_SCENARIOS),
         figures=[f"{PD}/figures/{f}" for f in PD_FIGURES],
+        sweep=f"{PD}/figures/fig9_latitude.png",
     output:
         f"{REPORTS}/platform_drift.html",
     log:
@@ -125,3 +127,35 @@ rule platform_drift_report:
         f"{PD}/benchmarks/report.tsv"
     script:
         "../scripts/pd_report.py"
+
+
+rule platform_drift_latitude_sweep:
+    input:
+        PD_SIMULATION_CODE,
+        "pipeline/platform_drift/sweep.py",
+        scenario="config/scenarios/platform_drift/stationary.yaml",
+        codegen=f"{PD}/codegen_check.txt",
+    output:
+        csv=f"{PD}/latitude_sweep.csv",
+        png=f"{PD}/figures/fig9_latitude.png",
+    log:
+        f"{PD}/logs/latitude_sweep.log",
+    benchmark:
+        f"{PD}/benchmarks/latitude_sweep.tsv"
+    script:
+        "../scripts/pd_sweep.py"
+
+
+rule platform_drift_notebook:
+    input:
+        PD_DERIVATIONS,
+        f"{PD}/stationary/errors.csv",
+        notebook="notebooks/platform_drift.ipynb",
+    output:
+        f"{REPORTS}/notebooks/platform_drift.html",
+    log:
+        f"{PD}/logs/notebook.log",
+    benchmark:
+        f"{PD}/benchmarks/notebook.tsv"
+    script:
+        "../scripts/execute_notebook.py"

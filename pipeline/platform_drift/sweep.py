@@ -1,0 +1,91 @@
+"""A figure the paper lacks: position error at 2 h against latitude, per scheme and drift case.
+
+The stationary scenario is rerun at latitudes 0-80 deg (everything else as in its file); the
+2 h error of each curve goes to ``results/platform_drift/latitude_sweep.csv``
+(``lat_deg,case,scheme,error_2h_m``) and ``figures/fig9_latitude.png``.
+
+``python -m pipeline.platform_drift.sweep``
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import io
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
+
+from pipeline.atomic import write_bytes, write_csv  # noqa: E402
+from pipeline.platform_drift.figures import STYLE  # noqa: E402
+from pipeline.platform_drift.run import simulate_errors  # noqa: E402
+from pipeline.platform_drift.scenario import load_scenario  # noqa: E402
+
+__all__ = ["SWEEP_COLUMNS", "LATITUDES_DEG", "sweep", "plot", "main"]
+
+SWEEP_COLUMNS = ["lat_deg", "case", "scheme", "error_2h_m"]
+LATITUDES_DEG = (0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0)
+CASES = ("ch1", "ch3")
+
+
+def sweep(scenario: str | Path, latitudes=LATITUDES_DEG, log=print) -> pd.DataFrame:
+    """2 h error of every scheme for the stationary scenario moved to each latitude."""
+    sc = load_scenario(scenario)
+    sc = dataclasses.replace(sc, cases=CASES)
+    rows = []
+    for lat in latitudes:
+        moved = dataclasses.replace(sc, route=dataclasses.replace(sc.route, lat0=np.deg2rad(lat)))
+        errors, diag, _ = simulate_errors(moved, 7200.0, log=lambda m: None)
+        both = pd.concat([errors, diag], ignore_index=True)
+        final = both[both["t_s"] == both["t_s"].max()]
+        for r in final.itertuples(index=False):
+            rows.append(
+                {"lat_deg": lat, "case": r.case, "scheme": r.scheme, "error_2h_m": r.error_m}
+            )
+        log(f"latitude sweep: {lat:g} deg done")
+    return pd.DataFrame(rows, columns=SWEEP_COLUMNS)
+
+
+def plot(frame: pd.DataFrame) -> bytes:
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    titles = {"ch1": "channel-1 drift 0.01 deg/h", "ch3": "channel-3 drift 0.1 deg/h"}
+    for ax, case in zip(axes, CASES, strict=True):
+        for scheme, style in STYLE.items():
+            cur = frame[(frame["case"] == case) & (frame["scheme"] == scheme)]
+            if not cur.empty:
+                ax.plot(cur["lat_deg"], cur["error_2h_m"] / 1000.0, marker="o", ms=3, **style)
+        ax.set_title(titles[case], fontsize=10)
+        ax.set_xlabel("latitude (deg)")
+        ax.set_ylabel("position error at 2 h (km)")
+        ax.grid(alpha=0.3)
+    handles, labels = axes[1].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=9, frameon=False)
+    fig.suptitle(
+        "Fig. 9 (not in the paper): error at 2 h against latitude, vehicle at rest", fontsize=12
+    )
+    fig.tight_layout(rect=(0, 0.08, 1, 0.94))
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=130, metadata={"Software": None})
+    plt.close(fig)
+    return buf.getvalue()
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--scenario", default="config/scenarios/platform_drift/stationary.yaml")
+    ap.add_argument("--out-csv", default="results/platform_drift/latitude_sweep.csv")
+    ap.add_argument("--out-png", default="results/platform_drift/figures/fig9_latitude.png")
+    a = ap.parse_args(argv)
+    frame = sweep(a.scenario)
+    write_csv(a.out_csv, frame, SWEEP_COLUMNS)
+    write_bytes(a.out_png, plot(frame))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
