@@ -34,7 +34,16 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-__all__ = ["Check", "AuditRow", "run_check", "run_audit", "numeric_residual", "STATUSES"]
+__all__ = [
+    "Check",
+    "AuditRow",
+    "run_check",
+    "run_audit",
+    "numeric_residual",
+    "audit_frame",
+    "audit_main",
+    "STATUSES",
+]
 
 STATUSES = ("match", "differs", "not_checkable")
 N_POINTS = 40
@@ -160,3 +169,29 @@ def run_audit(checks: Iterable[Check]) -> list[AuditRow]:
             raise ValueError(f"equation {r.equation} audited twice")
         seen.add(r.equation)
     return rows
+
+
+def audit_frame(checks: Iterable[Check]):
+    """Run the checks and return a DataFrame with the contract columns of equation_audit.csv."""
+    import pandas as pd
+
+    from pipeline.columns import AUDIT_COLUMNS
+
+    return pd.DataFrame([r.as_dict() for r in run_audit(checks)], columns=AUDIT_COLUMNS)
+
+
+def audit_main(checks_fn, description: str, argv: list[str] | None = None) -> int:
+    """Command line of a paper's audit module: ``--out equation_audit.csv``."""
+    import argparse
+    from pathlib import Path
+
+    from pipeline.atomic import write_csv
+    from pipeline.columns import AUDIT_COLUMNS
+
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--out", type=Path, required=True, help="equation_audit.csv to write")
+    args = parser.parse_args(argv)
+    frame = audit_frame(checks_fn())
+    write_csv(args.out, frame, AUDIT_COLUMNS)
+    print(f"equation audit: {len(frame)} rows, {frame['status'].value_counts().to_dict()}")
+    return 0

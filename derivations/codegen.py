@@ -25,13 +25,20 @@ from __future__ import annotations
 
 import keyword
 import os
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
 
-__all__ = ["GeneratedFunction", "render_function", "render_module", "write_module"]
+__all__ = [
+    "GeneratedFunction",
+    "render_function",
+    "render_module",
+    "write_module",
+    "generate_main",
+]
 
 
 @dataclass(frozen=True)
@@ -130,3 +137,25 @@ def write_module(path: str | os.PathLike[str], source: str) -> None:
     from pipeline.atomic import write_text
 
     write_text(path, source)
+
+
+def generate_main(
+    source: Callable[[], str], default_out: Path, module: str, argv: list[str] | None = None
+) -> int:
+    """Command line of a paper's generate module: write ``--out``, or ``--check`` freshness."""
+    import argparse
+    import sys
+
+    parser = argparse.ArgumentParser(description=f"Generate {default_out.name} ({module}).")
+    parser.add_argument("--out", type=Path, default=default_out, help="module to write")
+    parser.add_argument("--check", action="store_true", help="fail if --out is stale")
+    args = parser.parse_args(argv)
+    text = source()
+    if args.check:
+        current = args.out.read_text(encoding="utf-8") if args.out.exists() else ""
+        if current != text:
+            print(f"{args.out} is stale: run python -m {module}", file=sys.stderr)
+            return 1
+        return 0
+    write_module(args.out, text)
+    return 0

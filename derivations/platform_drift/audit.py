@@ -13,13 +13,11 @@ says in which small quantities. The pipeline always uses the derived form.
 
 from __future__ import annotations
 
-import argparse
-from pathlib import Path
-
 import pandas as pd
 import sympy as sp
 
-from derivations.checks import AuditRow, Check, run_audit
+from derivations.checks import AuditRow, Check, audit_main, run_audit
+from derivations.checks import audit_frame as checks_audit_frame
 from derivations.platform_drift import algorithm as alg
 from derivations.platform_drift import alignment as al
 from derivations.platform_drift import drift as dr
@@ -640,23 +638,11 @@ def audit_rows() -> list[AuditRow]:
 
 def audit_frame() -> pd.DataFrame:
     """The audit as a DataFrame with the contract columns."""
-    from pipeline.columns import AUDIT_COLUMNS
-
-    return pd.DataFrame([r.as_dict() for r in audit_rows()], columns=AUDIT_COLUMNS)
+    return checks_audit_frame(checks())
 
 
 def main(argv: list[str] | None = None) -> int:
-    from pipeline.atomic import write_csv
-    from pipeline.columns import AUDIT_COLUMNS
-
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--out", type=Path, required=True, help="equation_audit.csv to write")
-    args = parser.parse_args(argv)
-    frame = audit_frame()
-    write_csv(args.out, frame, AUDIT_COLUMNS)
-    counts = frame["status"].value_counts().to_dict()
-    print(f"equation audit: {len(frame)} rows, {counts}")
-    return 0
+    return audit_main(checks, __doc__, argv)
 
 
 if __name__ == "__main__":

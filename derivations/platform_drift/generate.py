@@ -7,11 +7,9 @@ committed file is stale. Where the printed equation differs from the derivation 
 
 from __future__ import annotations
 
-import argparse
-import sys
 from pathlib import Path
 
-from derivations.codegen import GeneratedFunction, render_module, write_module
+from derivations.codegen import GeneratedFunction, generate_main, render_module
 from derivations.platform_drift import algorithm as alg
 from derivations.platform_drift import alignment as al
 from derivations.platform_drift import drift as dr
@@ -288,22 +286,7 @@ def source() -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--out", type=Path, default=OUTPUT, help="module to write")
-    parser.add_argument("--check", action="store_true", help="fail if --out is stale")
-    args = parser.parse_args(argv)
-    text = source()
-    if args.check:
-        current = args.out.read_text(encoding="utf-8") if args.out.exists() else ""
-        if current != text:
-            print(
-                f"{args.out} is stale: run python -m derivations.platform_drift.generate",
-                file=sys.stderr,
-            )
-            return 1
-        return 0
-    write_module(args.out, text)
-    return 0
+    return generate_main(source, OUTPUT, "derivations.platform_drift.generate", argv)
 
 
 if __name__ == "__main__":

@@ -30,12 +30,14 @@ rule north_finding_codegen_check:
         generated="pipeline/generated/north_finding.py",
     output:
         f"{NF}/codegen_check.txt",
+    params:
+        generator="derivations.north_finding.generate",
     log:
         f"{NF}/logs/codegen_check.log",
     benchmark:
         f"{NF}/benchmarks/codegen_check.tsv"
     script:
-        "../scripts/nf_codegen_check.py"
+        "../scripts/codegen_check.py"
 
 
 rule north_finding_audit:
@@ -46,12 +48,14 @@ rule north_finding_audit:
         "derivations/north_finding/audit.py",
     output:
         f"{NF}/equation_audit.csv",
+    params:
+        audit="derivations.north_finding.audit",
     log:
         f"{NF}/logs/audit.log",
     benchmark:
         f"{NF}/benchmarks/audit.tsv"
     script:
-        "../scripts/nf_audit.py"
+        "../scripts/equation_audit.py"
 
 
 rule north_finding_simulate:
