@@ -69,6 +69,11 @@ def render_page(
         "both proposed curves: the paper's analytic error (eqs. 32, 36) and a full nonlinear "
         "simulation of the platform and of the algorithm as the paper specifies it."
     )
+    failed = verdicts[verdicts["verdict"].isin(["not_upheld", "not_reproduced"])]
+    summary += H.paragraph(
+        "Not upheld or not reproduced (computed): "
+        + ("; ".join(f"{r.id} ({r.reproduced})" for r in failed.itertuples()) or "none")
+    )
     differs = audit[audit["status"] == "differs"]
     audit_body = H.paragraph("Printed equations that differ from the derivation:") + H.table(
         differs, class_column="status"
