@@ -127,7 +127,7 @@ def workflow_run(tmp_path_factory):
             f.unlink()
     _reduce_paper(scenarios / "paper.yaml")
     assert not (repo / "results").exists()
-    r = _snakemake("--cores", "2", "--quiet", cwd=repo, timeout=1200)
+    r = _snakemake("--cores", "2", "--quiet", cwd=repo, timeout=600)
     assert r.returncode == 0, (r.stdout + r.stderr)[-5000:]
     return repo
 
@@ -200,7 +200,7 @@ def test_bad_scenario_stops_the_workflow_before_any_job(workflow_run):
     bad.write_text(yaml.safe_dump(raw), encoding="utf-8")
     before = {p: p.stat().st_mtime_ns for p in (repo / "results").rglob("*") if p.is_file()}
     try:
-        r = _snakemake("--cores", "1", "--forceall", cwd=repo, timeout=600)
+        r = _snakemake("--cores", "1", "--forceall", cwd=repo, timeout=300)
     finally:
         bad.unlink()
     assert r.returncode != 0
