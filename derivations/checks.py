@@ -122,6 +122,41 @@ def numeric_residual(
     return worst
 
 
+SIMPLIFY_SECONDS = 10
+
+
+class _Timeout(Exception):
+    pass
+
+
+def _tidy(residual: sp.Expr) -> sp.Expr:
+    """A readable residual. The status is already decided numerically, so this is presentation.
+
+    ``simplify`` usually takes well under a second here, but its run time varies with SymPy's
+    term order from process to process and has exceeded minutes; it gets SIMPLIFY_SECONDS (in
+    the main thread, via SIGALRM), after which the residual is shown with common factors pulled
+    out instead.
+    """
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        return sp.factor_terms(residual)
+
+    def _raise(signum, frame):
+        raise _Timeout
+
+    previous = signal.signal(signal.SIGALRM, _raise)
+    signal.setitimer(signal.ITIMER_REAL, SIMPLIFY_SECONDS)
+    try:
+        return sp.simplify(sp.trigsimp(residual))
+    except _Timeout:
+        return sp.factor_terms(residual)
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
 def run_check(check: Check) -> AuditRow:
     """Compute the status, residual and note of one check."""
     if check.printed is None or check.derived is None:
@@ -152,7 +187,7 @@ def run_check(check: Check) -> AuditRow:
     if err < REL_TOL:
         note = check.if_match or "zero numerically at 40 random points"
         return AuditRow(check.equation, "match", "0", note)
-    simplified = [sp.simplify(sp.trigsimp(r)) for r in raw]
+    simplified = [_tidy(r) for r in raw]
     if all(r == 0 for r in simplified):
         return AuditRow(check.equation, "match", "0", check.if_match)
     text = "; ".join(str(r) for r in simplified) if len(simplified) > 1 else str(simplified[0])

@@ -193,7 +193,8 @@ def _check_semantics(sc: Scenario) -> None:
         ms = sc.table["max_search"]
         if ms["mode"] == "scan" and "step_deg" not in ms:
             raise ConfigError(
-                f"{sc.path}: table.max_search.step_deg is required when mode = 'scan'"
+                f"{sc.path}: table.max_search.step_deg is required when mode = 'scan' "
+                "(allowed: 0 < step_deg <= 90)"
             )
     else:
         if "A2" in sc.methods and "a2_tau_deg" not in sc.raw:
