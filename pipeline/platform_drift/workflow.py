@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from pipeline.platform_drift.scenario import load_scenario
+from pipeline.scenarios import scenario_names, validate_all
 
 __all__ = ["SIMULATION_CODE", "RESULT_FILES", "scenarios", "validate_scenarios"]
 
@@ -23,15 +24,11 @@ RESULT_FILES = ["errors.csv", "errors_diagnostic.csv", "summary.csv", "provenanc
 
 def scenarios(directory: str | Path = "config/scenarios/platform_drift") -> list[str]:
     """Names of every scenario file ``<directory>/<name>.yaml`` (the workflow runs them all)."""
-    names = sorted(p.stem for p in Path(directory).glob("*.yaml"))
-    if not names:
-        raise ValueError(f"{directory}: no scenario files (*.yaml) found")
-    return names
+    return scenario_names(directory)
 
 
 def validate_scenarios(
     names: list[str], directory: str | Path = "config/scenarios/platform_drift"
 ) -> None:
     """Load and validate every scenario; the first bad file stops the workflow before any job."""
-    for name in names:
-        load_scenario(Path(directory) / f"{name}.yaml")
+    validate_all(names, directory, load_scenario)

@@ -1,0 +1,27 @@
+"""Scenario discovery and parse-time validation, shared by every paper's Snakemake rules.
+
+A paper's scenarios are the files ``config/scenarios/<slug>/<name>.yaml``; the workflow runs
+every one, and validates them all when it is parsed, so a bad file stops it before any job.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+__all__ = ["scenario_names", "validate_all"]
+
+
+def scenario_names(directory: str | Path) -> list[str]:
+    """Names of every scenario file ``<directory>/<name>.yaml``, sorted."""
+    names = sorted(p.stem for p in Path(directory).glob("*.yaml"))
+    if not names:
+        raise ValueError(f"{directory}: no scenario files (*.yaml) found")
+    return names
+
+
+def validate_all(names: list[str], directory: str | Path, load: Callable[[Path], Any]) -> None:
+    """Load (and so validate) every named scenario; the first bad file raises its ConfigError."""
+    for name in names:
+        load(Path(directory) / f"{name}.yaml")
