@@ -4,6 +4,7 @@
 #   make test       run the test suite            (PYTEST_ARGS="-k foo -x" to pass options)
 #   make reproduce  run the Snakemake workflow    (CORES=2 by default)
 #   make lint       ruff check + ruff format --check
+#   make bench      benchmarks (altimeter_attitude filters vs filterpy), on demand
 #   make lock       regenerate environment.lock from requirements.in
 #   make clean      remove workflow outputs (results/, .snakemake/); keeps .venv
 
@@ -28,7 +29,7 @@ UV             := $(LOCK_TOOL_VENV)/bin/uv
 LOCK_ARGS := pip compile --generate-hashes --python-version 3.11 \
 	--python-platform x86_64-unknown-linux-gnu requirements.in -o environment.lock
 
-.PHONY: venv reproduce test lint lock clean check-python
+.PHONY: venv reproduce test lint bench lock clean check-python
 
 venv: $(STAMP)
 
@@ -63,6 +64,9 @@ reproduce: $(STAMP)
 
 test: $(STAMP)
 	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pytest -q $(PYTEST_ARGS)
+
+bench: $(STAMP)
+	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.altimeter_attitude.benchmark
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check .

@@ -15,9 +15,11 @@ configfile: "config/config.yaml"
 include: "pipeline/rules/common.smk"
 include: "pipeline/rules/north_finding.smk"
 include: "pipeline/rules/platform_drift.smk"
+include: "pipeline/rules/altimeter_attitude.smk"
 
 
 rule all:
     input:
         rules.north_finding_all.input,
         rules.platform_drift_all.input,
+        rules.altimeter_attitude_all.input,

@@ -117,6 +117,23 @@ def _reduce_paper(path: Path) -> None:
     }
 
 
+def _reduce_altimeter(repo: Path) -> None:
+    """altimeter_attitude: the paper scenario only, 10 runs; a two-point sweep of 3 runs."""
+    scenarios = repo / "config" / "scenarios" / "altimeter_attitude"
+    for f in scenarios.glob("*.yaml"):
+        if f.name != "paper.yaml":
+            f.unlink()
+    paper = scenarios / "paper.yaml"
+    text, n = re.subn(r"(?m)^(  n_runs:) \d+", r"\1 10", paper.read_text(encoding="utf-8"))
+    assert n == 1, "altimeter_attitude paper.yaml layout changed: update _reduce_altimeter"
+    paper.write_text(text, encoding="utf-8")
+    config = repo / "config" / "config.yaml"
+    raw = yaml.safe_load(config.read_text(encoding="utf-8"))
+    raw["altimeter_attitude"]["sweep"]["n_runs"] = 3
+    raw["altimeter_attitude"]["sweep"]["values"] = {"intensity": [0.5, 1.0]}
+    config.write_text(yaml.safe_dump(raw, sort_keys=False), encoding="utf-8")
+
+
 @pytest.fixture(scope="module")
 def workflow_run(tmp_path_factory):
     repo = tmp_path_factory.mktemp("repo")
@@ -126,6 +143,7 @@ def workflow_run(tmp_path_factory):
         if f.name not in ("paper.yaml", "example_readings.yaml"):
             f.unlink()
     _reduce_paper(scenarios / "paper.yaml")
+    _reduce_altimeter(repo)
     assert not (repo / "results").exists()
     r = _snakemake("--cores", "2", "--quiet", cwd=repo, timeout=600)
     assert r.returncode == 0, (r.stdout + r.stderr)[-5000:]
@@ -208,3 +226,32 @@ def test_bad_scenario_stops_the_workflow_before_any_job(workflow_run):
     assert "zz_bad_latitude.yaml" in err and "site.lat_deg" in err
     after = {p: p.stat().st_mtime_ns for p in (repo / "results").rglob("*") if p.is_file()}
     assert after == before  # no job ran
+
+
+@pytest.mark.slow
+def test_altimeter_attitude_outputs(workflow_run):
+    from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
+    from pipeline.columns import RMS_SUMMARY_COLUMNS, SWEEP_COLUMNS
+
+    results = workflow_run / "results" / "altimeter_attitude"
+    summary = pd.read_csv(results / "paper" / "rms_summary.csv")
+    assert list(summary.columns) == RMS_SUMMARY_COLUMNS
+    assert (summary["n_runs"] == 10).all()  # the reduced scenario ran
+    published = yaml.safe_load(
+        (workflow_run / "config" / "published" / "altimeter_attitude.yaml").read_text(
+            encoding="utf-8"
+        )
+    )
+    verdicts = pd.read_csv(results / "verdicts.csv", dtype=str, keep_default_na=False)
+    assert list(verdicts.columns) == VERDICT_COLUMNS
+    ids = [v["id"] for v in published["values"]] + [c["id"] for c in published["claims"]]
+    assert sorted(verdicts["id"]) == sorted(ids)
+    assert set(verdicts["verdict"]) <= set(VERDICTS)
+    sweep = pd.read_csv(results / "sweep.csv")
+    assert list(sweep.columns) == SWEEP_COLUMNS and set(sweep["value"]) == {0.5, 1.0}
+    for name in [*FIGURES, SWEEP_FIGURE]:
+        assert (results / "figures" / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n", name
+    audit = pd.read_csv(results / "equation_audit.csv", dtype=str)
+    assert list(audit.columns) == AUDIT_COLUMNS and "13a" in set(audit["equation"])
+    page = (workflow_run / "reports" / "altimeter_attitude.html").read_text(encoding="utf-8")
+    assert "rms_summary" in page or "Fig. 7" in page

@@ -1,0 +1,152 @@
+"""Generate ``pipeline/generated/altimeter_attitude.py`` from the derivations.
+
+Run ``python -m derivations.altimeter_attitude.generate``; ``--check`` exits non-zero if the
+committed file is stale. Where the printed equation differs from the derivation (eq. 11's
+roll; the sign of C(x) in eq. 26 is immaterial; see the audit), the derived form is generated.
+Matrices are returned flattened row by row; :mod:`pipeline.altimeter_attitude.model`
+reshapes them.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import sympy as sp
+
+from derivations.altimeter_attitude import complementary as cf
+from derivations.altimeter_attitude import kinematics as kin
+from derivations.altimeter_attitude import leveling as lev
+from derivations.altimeter_attitude import model
+from derivations.altimeter_attitude import symbols as s
+from derivations.codegen import GeneratedFunction, generate_main, render_module
+
+OUTPUT = Path(__file__).resolve().parents[2] / "pipeline" / "generated" / "altimeter_attitude.py"
+
+NAMES = {s.dt: "dt", s.F_norm: "f_norm"}
+
+HEADER = """Numeric code of the IMU + altimeter attitude paper, generated from derivations/altimeter_attitude.
+
+Regenerate: python -m derivations.altimeter_attitude.generate
+Conventions: SI units, angles in rad, rates in rad/s; NED navigation frame, g down positive;
+c = [C31, C32, C33] is the third row of C_b^n (body -> NED); x = [c1, c2, c3, V_d, h] with
+V_d down and h up; omegat_*, ft_* are the gyro and accelerometer outputs. Every function
+broadcasts its arguments; matrices are returned flattened row by row."""
+
+
+def _fn(name, args, exprs, doc) -> GeneratedFunction:
+    return GeneratedFunction(name, tuple(args), exprs, doc, NAMES)
+
+
+def _flat(m: sp.Matrix) -> tuple[sp.Expr, ...]:
+    return tuple(m)
+
+
+def functions() -> list[GeneratedFunction]:
+    """The generated functions, each derived in derivations/altimeter_attitude."""
+    mats = model.model_matrices()
+    gamma = sp.Matrix.hstack(*model.noise_columns())
+    c_euler = kin.third_row_euler()
+    euler_c = kin.euler_from_third_row()
+    inputs = (*s.omega_t, *s.f_t)
+    return [
+        _fn(
+            "model_matrix_a",
+            (*inputs, s.k, s.gamma),
+            _flat(mats["A"]),
+            "Eq. 26: the 5 x 5 system matrix A (row by row) of x = [c1, c2, c3, V_d, h] for\n"
+            "    gyro outputs omegat, accelerometer outputs ft, gain k and gamma = 1 - c^T c.",
+        ),
+        _fn(
+            "noise_matrix_c",
+            tuple(s.c),
+            _flat(mats["C"]),
+            "Eq. 26: the 5 x 6 noise matrix C(x) (row by row) for w = [n_w, n_a], with the\n"
+            "    sensor model omegat = omega + n_w, ft = f + n_a (the negative of the printed\n"
+            "    matrix; the sign of w is immaterial for the covariances).",
+        ),
+        _fn(
+            "noise_gamma",
+            (),
+            _flat(gamma),
+            "Eqs. 32-33: Gamma = [G_c1 ... G_c6] (5 x 30, row by row), G_ci x = C(x) e_i.",
+        ),
+        _fn(
+            "normalisation_error",
+            tuple(s.c),
+            1 - (s.c.T * s.c)[0],
+            "Eq. 15: gamma = 1 - c^T c.",
+        ),
+        _fn(
+            "third_row_from_euler",
+            (s.phi, s.theta),
+            _flat(c_euler),
+            "Eq. 6: c = C_b^n(3,:) = [-sin theta, sin phi cos theta, cos phi cos theta].",
+        ),
+        _fn(
+            "euler_from_third_row",
+            tuple(s.c),
+            _flat(euler_c),
+            "Inverse of eq. 6: (phi, theta) = (atan2(c2, c3), atan2(-c1, sqrt(c2^2 + c3^2)));\n"
+            "    independent of the norm of c.",
+        ),
+        _fn(
+            "euler_jacobian_third_row",
+            tuple(s.c),
+            _flat(euler_c.jacobian(s.c)),
+            "d(phi, theta)/dc (2 x 3, row by row): maps a covariance of c to roll/pitch.",
+        ),
+        _fn(
+            "euler_model_rhs",
+            (s.phi, s.theta, s.V_d, s.h, *inputs, s.g),
+            _flat(model.euler_model_rhs()),
+            "UKF model (eqs. 4, 6, 24, 25): d/dt [phi, theta, V_d, h] for sensor outputs.",
+        ),
+        _fn(
+            "euler_noise_jacobian",
+            (s.phi, s.theta),
+            _flat(model.euler_noise_jacobian()),
+            "d(UKF model)/d[n_w, n_a] (4 x 6, row by row): sensor noise to state rates.",
+        ),
+        _fn(
+            "euler_state_jacobian",
+            (s.phi, s.theta, *inputs),
+            _flat(model.euler_state_jacobian()),
+            "d(UKF model)/d[phi, theta, V_d, h] (4 x 4, row by row), for the EKF comparison.",
+        ),
+        _fn(
+            "accel_third_row",
+            tuple(s.f_t),
+            _flat(
+                lev.third_row_from_accel_unit()
+                .subs(dict(zip(s.f_b, s.f_t, strict=True)))
+                .subs(s.F_norm, sp.sqrt(sum(fi**2 for fi in s.f_t)))
+            ),
+            "Eq. 17-b: c_a = -f / ||f||, the accelerometer estimate of c (cruise assumption).",
+        ),
+        _fn(
+            "leveling_angles",
+            (*s.f_t, s.g),
+            _flat(lev.leveling_angles().subs(dict(zip(s.f_b, s.f_t, strict=True)))),
+            "Eq. 11 as derived from eq. 10: phi = atan2(-f_y, -f_z), theta = asin(f_x / g)\n"
+            "    (the printed atan2(f_y, f_z) is off by 180 deg).",
+        ),
+        _fn(
+            "pi_gains",
+            (s.omega_c, s.xi),
+            _flat(cf.gains()),
+            "Eq. 20: (k_i, k_p) = (omega^2, 2 xi omega) of the PI complementary filter.",
+        ),
+    ]
+
+
+def source() -> str:
+    """Source text of the generated module."""
+    return render_module(functions(), HEADER)
+
+
+def main(argv: list[str] | None = None) -> int:
+    return generate_main(source, OUTPUT, "derivations.altimeter_attitude.generate", argv)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,224 @@
+"""Attitude kinematics from the gyros: DCM, Euler angles, quaternion, third DCM row.
+
+Eqs. 1-8 and 13-15 of the paper, derived from the 3-2-1 Euler parametrisation of
+``C_b^n`` (:func:`derivations.frames.mat_tn` transposed) and Poisson's equation; nothing
+is copied from the paper (``audit.py`` compares).
+
+* eq. 1: d/dt C_b^n = C_b^n Omega_nb^b, with Omega = skew(omega_nb^b) (eq. 2);
+* eq. 3: omega_ib^b = omega_ie^b + omega_en^b + omega_nb^b (addition of angular velocities);
+* eq. 4: Euler-angle rates from the body rate;
+* eq. 5: quaternion rates q_dot = 1/2 q (x) [0, omega];
+* eq. 6: the third row of C_b^n in Euler angles and in the quaternion;
+* eqs. 7, 13: c_dot = C(3,:) Omega, i.e. c_dot = -omega x c;
+* eq. 8: the row has unit norm;
+* eqs. 14-15: c_dot = k gamma c - Omega c with gamma = 1 - c^T c, whose norm obeys
+  n_dot = 2 k (1 - n) n (n = c^T c): n = 1 is attracting at rate 2k.
+
+>>> import sympy as sp
+>>> from derivations.altimeter_attitude import symbols as s
+>>> third_row_euler().T
+Matrix([[-sin(theta), sin(phi)*cos(theta), cos(phi)*cos(theta)]])
+>>> sp.simplify(norm_dynamics() - 2 * s.k * (1 - sp.Symbol("n")) * sp.Symbol("n"))
+0
+"""
+
+from __future__ import annotations
+
+import functools
+
+import sympy as sp
+
+from derivations.altimeter_attitude import symbols as s
+from derivations.frames import angular_velocity_from_dcm, mat_ne, mat_tn, rot_z, skew
+
+__all__ = [
+    "mat_nb",
+    "euler_functions",
+    "rate_symbols",
+    "body_rate_from_euler",
+    "dcm_rate",
+    "euler_rates",
+    "quaternion_dcm",
+    "quaternion_from_euler",
+    "quaternion_rates",
+    "third_row_euler",
+    "third_row_quaternion",
+    "euler_from_third_row",
+    "third_row_rates",
+    "normalised_third_row_rates",
+    "norm_dynamics",
+    "angular_velocity_addition",
+]
+
+phi_dot, theta_dot, psi_dot = sp.symbols("phi_dot theta_dot psi_dot", real=True)
+
+
+def mat_nb(phi: sp.Expr = s.phi, theta: sp.Expr = s.theta, psi: sp.Expr = s.psi) -> sp.Matrix:
+    """C_b^n (body -> NED) of the 3-2-1 sequence: the transpose of ``mat_tn``."""
+    return mat_tn(psi, theta, phi).T
+
+
+def euler_functions() -> tuple[sp.Function, sp.Function, sp.Function]:
+    """phi(t), theta(t), psi(t) as undefined functions of time."""
+    return tuple(sp.Function(n, real=True)(s.t) for n in ("phi", "theta", "psi"))
+
+
+def rate_symbols() -> dict[sp.Expr, sp.Symbol]:
+    """Replacement of Euler angles/derivatives of time by plain symbols."""
+    ph, th, ps = euler_functions()
+    return {
+        ph.diff(s.t): phi_dot,
+        th.diff(s.t): theta_dot,
+        ps.diff(s.t): psi_dot,
+        ph: s.phi,
+        th: s.theta,
+        ps: s.psi,
+    }
+
+
+def _plain(expr):
+    """Derivatives first, then the functions themselves."""
+    reps = rate_symbols()
+    derivs = {k: v for k, v in reps.items() if isinstance(k, sp.Derivative)}
+    funcs = {k: v for k, v in reps.items() if not isinstance(k, sp.Derivative)}
+    return expr.subs(derivs).subs(funcs)
+
+
+def body_rate_from_euler() -> sp.Matrix:
+    """omega_nb^b in terms of the Euler angles and their rates (Poisson's equation).
+
+    C_n^b = mat_tn is [T]^{BN}; ``angular_velocity_from_dcm`` gives [omega^{BN}]^B.
+    """
+    return sp.Matrix(_body_rate_from_euler())
+
+
+@functools.lru_cache(maxsize=1)
+def _body_rate_from_euler() -> sp.ImmutableMatrix:
+    ph, th, ps = euler_functions()
+    w = angular_velocity_from_dcm(mat_tn(ps, th, ph), s.t)
+    return sp.ImmutableMatrix(sp.simplify(_plain(w)))
+
+
+def dcm_rate() -> sp.Matrix:
+    """d/dt C_b^n in terms of the Euler angles and their rates (left side of eq. 1)."""
+    ph, th, ps = euler_functions()
+    return _plain(mat_nb(ph, th, ps).diff(s.t))
+
+
+def euler_rates() -> sp.Matrix:
+    """eq. 4: [phi_dot, theta_dot, psi_dot] from omega_nb^b = [wx, wy, wz].
+
+    Solves body_rate_from_euler() = omega for the three rates (computed once per process:
+    the solve and simplification take seconds and every model function needs them).
+    """
+    return sp.Matrix(_euler_rates())
+
+
+@functools.lru_cache(maxsize=1)
+def _euler_rates() -> sp.ImmutableMatrix:
+    w = body_rate_from_euler()
+    sol = sp.solve(list(w - s.omega), [phi_dot, theta_dot, psi_dot], dict=True)[0]
+    return sp.ImmutableMatrix([sp.simplify(sol[r]) for r in (phi_dot, theta_dot, psi_dot)])
+
+
+def quaternion_dcm(q: sp.Matrix = s.q) -> sp.Matrix:
+    """C_b^n of the unit quaternion q = [a, b, c, d] (scalar first, body -> NED).
+
+    The rotation v -> q (x) v (x) q*, written out: (a^2 - |v|^2) I + 2 v v^T + 2 a [v x].
+    """
+    a, v = q[0], sp.Matrix(q[1:])
+    return (a**2 - (v.T * v)[0]) * sp.eye(3) + 2 * v * v.T + 2 * a * skew(v)
+
+
+def _qmul(p: sp.Matrix, r: sp.Matrix) -> sp.Matrix:
+    """Hamilton product p (x) r of scalar-first quaternions."""
+    p0, pv = p[0], sp.Matrix(p[1:])
+    r0, rv = r[0], sp.Matrix(r[1:])
+    vec = p0 * rv + r0 * pv + pv.cross(rv)
+    return sp.Matrix([p0 * r0 - (pv.T * rv)[0], *vec])
+
+
+def quaternion_from_euler(phi=s.phi, theta=s.theta, psi=s.psi) -> sp.Matrix:
+    """q_b^n of the 3-2-1 sequence: q_z(psi) (x) q_y(theta) (x) q_x(phi)."""
+
+    def axis(angle, i):
+        v = [0, 0, 0]
+        v[i] = sp.sin(angle / 2)
+        return sp.Matrix([sp.cos(angle / 2), *v])
+
+    return _qmul(_qmul(axis(psi, 2), axis(theta, 1)), axis(phi, 0))
+
+
+def quaternion_rates(q: sp.Matrix = s.q, omega: sp.Matrix = s.omega) -> sp.Matrix:
+    """eq. 5: q_dot = 1/2 q (x) [0, omega_nb^b] (body rate in body axes multiplies on the right)."""
+    return sp.expand(_qmul(q, sp.Matrix([0, *omega])) / 2)
+
+
+def third_row_euler() -> sp.Matrix:
+    """eq. 6 (Euler form): C_b^n(3,:)^T; yaw drops out."""
+    return sp.simplify(mat_nb().row(2).T)
+
+
+def third_row_quaternion() -> sp.Matrix:
+    """eq. 6 (quaternion form): the third row of :func:`quaternion_dcm`."""
+    return sp.expand(quaternion_dcm().row(2).T)
+
+
+def euler_from_third_row(c: sp.Matrix = s.c) -> sp.Matrix:
+    """Roll and pitch from c = C_b^n(3,:): phi = atan2(c2, c3), theta = atan2(-c1, |(c2, c3)|).
+
+    Inverse of eq. 6 for |theta| < 90 deg. The atan2 form of pitch (rather than -asin c1) is
+    unchanged by a scale error of c, so a filter whose c is not exactly unit reads the
+    same angles.
+    """
+    return sp.Matrix([sp.atan2(c[1], c[2]), sp.atan2(-c[0], sp.sqrt(c[1] ** 2 + c[2] ** 2))])
+
+
+def third_row_rates(c: sp.Matrix = s.c, omega: sp.Matrix = s.omega) -> sp.Matrix:
+    """eqs. 7 and 13: c_dot = (C_b^n Omega)(3,:)^T = Omega^T c = -omega x c."""
+    # eq. 1, third row: d/dt C(3,:) = C(3,:) Omega  ->  c_dot = Omega^T c
+    return skew(omega).T * c
+
+
+def normalised_third_row_rates(c: sp.Matrix = s.c, omega: sp.Matrix = s.omega) -> sp.Matrix:
+    """eq. 14: c_dot = k gamma c - Omega c, gamma = 1 - c^T c (eq. 15)."""
+    gamma = 1 - (c.T * c)[0]
+    return s.k * gamma * c + third_row_rates(c, omega)
+
+
+def norm_dynamics() -> sp.Expr:
+    """d/dt (c^T c) under eq. 14, written in n = c^T c: 2 k (1 - n) n.
+
+    The rotation part drops out (c . (omega x c) = 0), so n = 1 is an equilibrium with
+    linearised rate -2k: the normalisation error decays if k > 0.
+    """
+    n = sp.Symbol("n")
+    cdot = normalised_third_row_rates()
+    ndot = sp.expand(2 * (s.c.T * cdot)[0])
+    return sp.factor(ndot.subs(s.c1**2, n - s.c2**2 - s.c3**2))
+
+
+def angular_velocity_addition() -> tuple[sp.Matrix, sp.Matrix]:
+    """eq. 3: omega_ib^b computed from C_b^i = C_e^i C_n^e C_b^n, and the sum of the parts.
+
+    Frames: i inertial, e Earth (turning at Omega_e about z), n NED at latitude L(t),
+    longitude l(t), b body (Euler angles). Returns (omega_ib^b, omega_ie^b + omega_en^b +
+    omega_nb^b), both in plain symbols (angles, rates), to be compared numerically.
+    """
+    om_e = sp.Symbol("Omega_e", positive=True)
+    lat_f, lon_f = (sp.Function(n, real=True)(s.t) for n in ("L", "l"))
+    ph, th, ps = euler_functions()
+    mat_ei = rot_z(om_e * s.t)  # [T]^{EI}
+    mat_ne_ = mat_ne(lat_f, lon_f)  # [T]^{NE}
+    mat_bn = mat_tn(ps, th, ph)  # [T]^{BN}
+    w_ib = angular_velocity_from_dcm(mat_bn * mat_ne_ * mat_ei, s.t, simplify=False)
+    w_ie = mat_bn * mat_ne_ * angular_velocity_from_dcm(mat_ei, s.t, simplify=False)
+    w_en = mat_bn * angular_velocity_from_dcm(mat_ne_, s.t, simplify=False)
+    w_nb = angular_velocity_from_dcm(mat_bn, s.t, simplify=False)
+    lat_dot, lon_dot, lat_s, lon_s = sp.symbols("L_dot l_dot L l", real=True)
+    reps = {lat_f.diff(s.t): lat_dot, lon_f.diff(s.t): lon_dot}
+
+    def plain(m):
+        return _plain(m.subs(reps).subs({lat_f: lat_s, lon_f: lon_s}))
+
+    return plain(w_ib), plain(w_ie + w_en + w_nb)

@@ -1,0 +1,1 @@
+"""Altimeter-aided attitude paper (slug ``altimeter_attitude``): batched estimators."""

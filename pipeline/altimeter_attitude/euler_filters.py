@@ -1,0 +1,140 @@
+"""The comparison filters on the Euler-angle model: UKF (Sec. 6) and EKF, vectorised.
+
+State [phi, theta, V_d, h]; model eqs. 4, 6, 24, 25 (generated ``euler_model_rhs``) driven
+by the IMU outputs held over the step, integrated by one classical RK4 step. The sensor noise
+enters the model through the outputs; it is handled as additive process noise
+``Q_k = dt^2 J Sigma J^T`` with J = d(rhs)/d[n_w, n_a] at the current estimate (generated
+``euler_noise_jacobian``) and Sigma = diag(sigma_g^2 I3, sigma_a^2 I3), plus Q_FLOOR I: the
+same first-order noise model as the linear filter's G Q G^T with G = dt C(x). The altimeter
+is z = h + v (eq. 27). The UKF is :mod:`pipeline.altimeter_attitude.ukf` (filterpy's
+algorithm, Merwe scaled sigma points); the EKF linearises the RK4 step to first order
+(F = I + dt d(rhs)/dx).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from pipeline.altimeter_attitude import ukf
+from pipeline.altimeter_attitude.estimates import Estimates
+from pipeline.altimeter_attitude.sensors import Inputs
+from pipeline.generated import altimeter_attitude as gen
+
+__all__ = ["rk4_step", "process_noise", "run_ukf", "run_ekf", "Q_FLOOR"]
+
+Q_FLOOR = 1e-12  # added to the process noise diagonal (keeps Q positive definite)
+
+
+def _rhs(x: np.ndarray, gyro: np.ndarray, accel: np.ndarray, g: float) -> np.ndarray:
+    out = gen.euler_model_rhs(
+        x[..., 0],
+        x[..., 1],
+        x[..., 2],
+        x[..., 3],
+        *np.moveaxis(gyro, -1, 0),
+        *np.moveaxis(accel, -1, 0),
+        g,
+    )
+    return np.stack(out, -1)
+
+
+def rk4_step(x: np.ndarray, dt: float, gyro: np.ndarray, accel: np.ndarray, g: float) -> np.ndarray:
+    """One RK4 step of the Euler model for states x (..., 4) and inputs broadcast to them."""
+    k1 = _rhs(x, gyro, accel, g)
+    k2 = _rhs(x + 0.5 * dt * k1, gyro, accel, g)
+    k3 = _rhs(x + 0.5 * dt * k2, gyro, accel, g)
+    k4 = _rhs(x + dt * k3, gyro, accel, g)
+    return x + dt / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
+
+
+def process_noise(x: np.ndarray, dt: float, gyro_sigma: float, accel_sigma: float) -> np.ndarray:
+    """Q_k (N, 4, 4) = dt^2 J Sigma J^T + Q_FLOOR I at the estimates x (N, 4)."""
+    J = np.stack(gen.euler_noise_jacobian(x[:, 0], x[:, 1]), -1).reshape(-1, 4, 6)
+    sig = np.array([gyro_sigma**2] * 3 + [accel_sigma**2] * 3)
+    return dt**2 * (J * sig) @ np.swapaxes(J, -1, -2) + Q_FLOOR * np.eye(4)
+
+
+def _initial(inputs: Inputs) -> tuple[np.ndarray, np.ndarray]:
+    x0 = inputs.x0_euler.copy()
+    P0 = np.zeros((inputs.n_runs, 4, 4))
+    P0[:, np.arange(4), np.arange(4)] = inputs.sigma0**2
+    return x0, P0
+
+
+def _estimates(name: str, xs: np.ndarray, Ps: np.ndarray) -> Estimates:
+    c = np.stack(gen.third_row_from_euler(xs[..., 0], xs[..., 1]), -1)
+    return Estimates(
+        filter=name,
+        roll=xs[..., 0],
+        pitch=xs[..., 1],
+        roll_sigma=np.sqrt(Ps[..., 0, 0]),
+        pitch_sigma=np.sqrt(Ps[..., 1, 1]),
+        c=c,
+        norm_error=np.zeros(xs.shape[:2]),
+    )
+
+
+def run_ukf(
+    inputs: Inputs, alpha: float, beta: float, kappa: float, name: str = "ukf"
+) -> Estimates:
+    """The UKF over all runs and steps (sigma points redrawn after predict, as filterpy 2)."""
+    weights = ukf.MerweWeights(n=4, alpha=alpha, beta=beta, kappa=kappa)
+    dt, g, sens = inputs.dt, inputs.g, inputs.sensors
+    R = np.array([[sens.altimeter_sigma**2]])
+    x, P = _initial(inputs)
+    N, T = inputs.n_runs, inputs.n_steps
+    xs = np.empty((N, T + 1, 4))
+    Ps = np.empty((N, T + 1, 2, 2))
+    xs[:, 0], Ps[:, 0] = x, P[:, :2, :2]
+
+    def fx(sig, dt_, gyro, accel):
+        return rk4_step(sig, dt_, gyro[:, None, :], accel[:, None, :], g)
+
+    def hx(sig):
+        return sig[..., 3:4]
+
+    for step in range(T):
+        Q = process_noise(x, dt, sens.gyro_sigma, sens.accel_sigma)
+        gyro, accel = inputs.gyro[:, step], inputs.accel[:, step]
+        x, P, sig_f = ukf.predict(x, P, fx, Q, dt, weights, gyro=gyro, accel=accel)
+        z = inputs.altimeter[:, step + 1]
+        if not np.isnan(z[0]):
+            x, P, _, _ = ukf.update(x, P, sig_f, z[:, None], hx, R, weights)
+        xs[:, step + 1] = x
+        Ps[:, step + 1] = P[:, :2, :2]
+    return _estimates(name, xs, Ps)
+
+
+def run_ekf(inputs: Inputs, name: str = "ekf") -> Estimates:
+    """An EKF on the same model (the paper reports that it diverges; no details given)."""
+    dt, g, sens = inputs.dt, inputs.g, inputs.sensors
+    R = sens.altimeter_sigma**2
+    x, P = _initial(inputs)
+    N, T = inputs.n_runs, inputs.n_steps
+    xs = np.empty((N, T + 1, 4))
+    Ps = np.empty((N, T + 1, 2, 2))
+    xs[:, 0], Ps[:, 0] = x, P[:, :2, :2]
+    eye = np.eye(4)
+    for step in range(T):
+        gyro, accel = inputs.gyro[:, step], inputs.accel[:, step]
+        Q = process_noise(x, dt, sens.gyro_sigma, sens.accel_sigma)
+        J = np.stack(
+            gen.euler_state_jacobian(
+                x[:, 0], x[:, 1], *np.moveaxis(gyro, -1, 0), *np.moveaxis(accel, -1, 0)
+            ),
+            -1,
+        ).reshape(N, 4, 4)
+        F = eye + dt * J
+        x = rk4_step(x, dt, gyro, accel, g)
+        P = F @ P @ np.swapaxes(F, -1, -2) + Q
+        z = inputs.altimeter[:, step + 1]
+        if not np.isnan(z[0]):
+            S = P[:, 3, 3] + R
+            K = P[:, :, 3] / S[:, None]
+            x = x + K * (z - x[:, 3])[:, None]
+            ikh = eye - K[:, :, None] * eye[3][None, None, :]
+            P = ikh @ P @ np.swapaxes(ikh, -1, -2) + R * K[:, :, None] * K[:, None, :]
+        P = 0.5 * (P + np.swapaxes(P, -1, -2))
+        xs[:, step + 1] = x
+        Ps[:, step + 1] = P[:, :2, :2]
+    return _estimates(name, xs, Ps)

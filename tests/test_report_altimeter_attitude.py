@@ -1,0 +1,471 @@
+"""HTML report of altimeter_attitude, built in tmp_path.
+
+Inputs: the real results (``results/altimeter_attitude/``: verdicts, rms summaries, sweep,
+provenance) where they exist, synthetic stand-ins where they do not; always a small synthetic
+equation audit and tiny matplotlib PNGs for the figures (their producers may not have run).
+The real scenario files are used for the Assumptions section.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+import runpy
+import shutil
+import sys
+from collections import Counter
+from html.parser import HTMLParser
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pandas as pd
+import pytest
+from matplotlib.figure import Figure
+
+from pipeline.altimeter_attitude.scenario import load_scenario
+from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE, scenarios
+from pipeline.columns import (
+    ALTIMETER_FILTERS,
+    AUDIT_COLUMNS,
+    RMS_SUMMARY_COLUMNS,
+    SWEEP_COLUMNS,
+    VERDICT_COLUMNS,
+)
+from pipeline.report import altimeter_attitude as R
+from pipeline.report import html as H
+
+REPO = Path(__file__).resolve().parents[1]
+REAL = REPO / "results" / "altimeter_attitude"
+SCEN_DIR = REPO / "config" / "scenarios" / "altimeter_attitude"
+SECTIONS = [
+    "summary",
+    "equation-audit",
+    "verdicts",
+    "results",
+    "figures",
+    "findings",
+    "assumptions",
+    "provenance",
+]
+
+AUDIT = pd.DataFrame(
+    {
+        "equation": ["7", "14", "26.A", "30.L", "31.Ppred", "13a"],
+        "status": ["match", "match", "match", "differs", "match", "not_checkable"],
+        "residual": ["0", "0", "0", "Matrix([[0], [0], [0], [-dt**2*g/2], [0]])", "0", ""],
+        "note": [
+            "",
+            "",
+            "",
+            "L = dt B drops the <gravity> & 'dt^2' term",
+            "",
+            "definition",
+        ],
+    }
+)[AUDIT_COLUMNS]
+
+
+# --------------------------------------------------------------------------- inputs
+
+
+def _synthetic_summary(rng: np.random.Generator) -> pd.DataFrame:
+    n = len(ALTIMETER_FILTERS)
+    df = pd.DataFrame({"filter": list(ALTIMETER_FILTERS)})
+    for c in RMS_SUMMARY_COLUMNS[1:-1]:
+        df[c] = rng.uniform(0.2, 3.0, n)
+    no_cov = df["filter"].isin(["complementary", "accel_leveling"])
+    df.loc[no_cov, ["roll_sigma_deg", "pitch_sigma_deg", "nees_roll", "nees_pitch"]] = np.nan
+    df["n_runs"] = 100
+    return df[RMS_SUMMARY_COLUMNS]
+
+
+def _synthetic_verdicts() -> pd.DataFrame:
+    rows = [
+        (
+            "V1.lkf_roll",
+            "statistical",
+            "roll_rms_deg",
+            "linear_kf",
+            "0.16",
+            "0.9",
+            "not_reproduced",
+        ),
+        ("V2.lkf_pitch", "statistical", "pitch_rms_deg", "linear_kf", "0.07", "0.08", "consistent"),
+        ("V3.ukf_roll", "statistical", "roll_rms_deg", "ukf", "0.21", "0.5", "not_reproduced"),
+        ("V4.ukf_pitch", "statistical", "pitch_rms_deg", "ukf", "0.10", "0.5", "not_reproduced"),
+        (
+            "C1.x",
+            "claim",
+            "less_rms",
+            "linear_kf",
+            "linear beats UKF",
+            "roll 0.9 vs 0.5",
+            "not_upheld",
+        ),
+        ("C2.y", "claim", "bounded", "linear_kf", "bounded", "ratio 0.4", "upheld"),
+    ]
+    df = pd.DataFrame(rows, columns=VERDICT_COLUMNS[:-1])
+    df["note"] = "synthetic"
+    return df[VERDICT_COLUMNS]
+
+
+def _synthetic_sweep(rng: np.random.Generator) -> pd.DataFrame:
+    rows = [
+        (p, v, f, *rng.uniform(0.3, 2.0, 2), 25)
+        for p, vals in (("imu_rate_hz", (25, 50, 100)), ("initial_error_deg", (0.5, 2, 5)))
+        for v in vals
+        for f in ("linear_kf", "ukf")
+    ]
+    return pd.DataFrame(rows, columns=SWEEP_COLUMNS)
+
+
+def _tiny_png(path: Path, label: str) -> None:
+    fig = Figure(figsize=(1.2, 0.8), dpi=40)
+    ax = fig.add_subplot()
+    ax.plot([0, 1], [0, 1])
+    ax.set_title(label, fontsize=5)
+    fig.savefig(path, format="png")
+
+
+def make_inputs(root: Path, *, figures: bool = True, audit: bool = True) -> dict:
+    """A results tree under ``root``: real files copied where present, synthetic otherwise."""
+    rng = np.random.default_rng(7)
+    results = root / "results" / "altimeter_attitude"
+    results.mkdir(parents=True)
+    names = scenarios(SCEN_DIR)
+    for f in ("verdicts.csv", "sweep.csv"):
+        if (REAL / f).is_file():
+            shutil.copy(REAL / f, results / f)
+    if not (results / "verdicts.csv").is_file():
+        _synthetic_verdicts().to_csv(results / "verdicts.csv", index=False)
+    if not (results / "sweep.csv").is_file():
+        _synthetic_sweep(rng).to_csv(results / "sweep.csv", index=False)
+    summaries = []
+    for name in names:
+        d = results / name
+        d.mkdir()
+        for f in ("rms_summary.csv", "provenance.json"):
+            if (REAL / name / f).is_file():
+                shutil.copy(REAL / name / f, d / f)
+        if not (d / "rms_summary.csv").is_file():
+            _synthetic_summary(rng).to_csv(d / "rms_summary.csv", index=False)
+        if not (d / "provenance.json").is_file():
+            (d / "provenance.json").write_text(
+                json.dumps(
+                    {
+                        "git_describe": "v0-synthetic",
+                        "config_sha256": load_scenario(SCEN_DIR / f"{name}.yaml").config_sha256,
+                        "seeds": {"seed": 1, "n_runs": 100},
+                        "packages": {"numpy": "x", "pandas": "y"},
+                    }
+                ),
+                encoding="utf-8",
+            )
+        summaries.append(d / "rms_summary.csv")
+    if audit:
+        AUDIT.to_csv(results / "equation_audit.csv", index=False)
+    figdir = results / "figures"
+    figdir.mkdir()
+    if figures:
+        for name in [*FIGURES, SWEEP_FIGURE]:
+            _tiny_png(figdir / name, name)
+    out = root / "reports" / "altimeter_attitude.html"
+    return {"results": results, "summaries": summaries, "figures": figdir, "out": out}
+
+
+class Parser(HTMLParser):
+    """Start tags with attributes, text of each <span data-...>, mismatched end tags."""
+
+    VOID = {"img", "meta", "br", "hr", "link", "input"}
+
+    def __init__(self) -> None:
+        super().__init__(convert_charrefs=True)
+        self.starts: list[tuple[str, dict]] = []
+        self.spans: list[tuple[dict, str]] = []
+        self.stack: list[str] = []
+        self.errors: list[str] = []
+        self._span: dict | None = None
+        self._text: list[str] = []
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        self.starts.append((tag, a))
+        if tag not in self.VOID:
+            self.stack.append(tag)
+        if tag == "span":
+            self._span, self._text = a, []
+
+    def handle_endtag(self, tag):
+        if tag in self.VOID:
+            return
+        if not self.stack or self.stack[-1] != tag:
+            self.errors.append(f"</{tag}> at {self.getpos()}")
+            return
+        self.stack.pop()
+        if tag == "span" and self._span is not None:
+            self.spans.append((self._span, "".join(self._text)))
+            self._span = None
+
+    def handle_data(self, data):
+        if self._span is not None:
+            self._text.append(data)
+
+
+def parse(text: str) -> Parser:
+    p = Parser()
+    p.feed(text)
+    p.close()
+    return p
+
+
+def section_html(text: str, anchor: str) -> str:
+    """The HTML of ``<section id=anchor>`` (sections nest, so count open/close tags)."""
+    start = text.index(f'<section id="{anchor}">')
+    depth, i = 0, start
+    for m in re.finditer(r"<section\b|</section>", text[start:]):
+        depth += 1 if m.group(0) == "<section" else -1
+        if depth == 0:
+            i = start + m.end()
+            break
+    return text[start:i]
+
+
+def fmt3(x) -> str:
+    return "—" if x is None or (isinstance(x, float) and math.isnan(x)) else f"{float(x):.3f}"
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory) -> dict:
+    paths = make_inputs(tmp_path_factory.mktemp("aa"))
+    R.build_page(
+        paths["results"],
+        SCEN_DIR,
+        paths["out"],
+        summaries=paths["summaries"],
+        figures_dir=paths["figures"],
+    )
+    paths["text"] = paths["out"].read_text(encoding="utf-8")
+    return paths
+
+
+# --------------------------------------------------------------------------- tests
+
+
+def test_page_written_atomically(built):
+    out = built["out"]
+    assert out.is_file() and out.stat().st_size > 0
+    assert sorted(p.name for p in out.parent.iterdir()) == [out.name]  # no temp files left
+
+
+def test_well_formed_sections_and_toc(built):
+    p = parse(built["text"])
+    assert p.errors == [] and p.stack == []
+    ids = [a.get("id") for t, a in p.starts if t == "section"]
+    assert len(ids) == len(set(ids)), Counter(ids)
+    toc = section_toc_links(built["text"])
+    for s in SECTIONS:
+        assert s in ids, s
+        assert s in toc, s
+    assert toc == SECTIONS  # TOC order is page order
+
+
+def section_toc_links(text: str) -> list[str]:
+    nav = re.search(r'<nav class="toc">(.*?)</nav>', text, re.S).group(1)
+    return re.findall(r'href="#([^"]+)"', nav)
+
+
+def test_verdict_and_audit_counts_equal_the_csv(built):
+    verdicts = pd.read_csv(built["results"] / "verdicts.csv", dtype=str, keep_default_na=False)
+    audit = pd.read_csv(built["results"] / "equation_audit.csv", dtype=str, keep_default_na=False)
+    expected = {
+        "values": Counter(verdicts.loc[verdicts["kind"] != "claim", "verdict"]),
+        "claims": Counter(verdicts.loc[verdicts["kind"] == "claim", "verdict"]),
+        "audit": Counter(audit["status"]),
+    }
+    p = parse(section_html(built["text"], "summary"))
+    shown: dict[str, dict[str, int]] = {"values": {}, "claims": {}, "audit": {}}
+    for a, text in p.spans:
+        if "data-group" in a:
+            word = a.get("data-verdict") or a.get("data-status")
+            shown[a["data-group"]][word] = int(text)
+    for group in expected:
+        assert {k: v for k, v in shown[group].items() if v} == dict(expected[group]), group
+    # the standard words are shown even at zero
+    assert {"upheld", "not_upheld", "not_checkable"} <= set(shown["claims"])
+    assert {"consistent", "not_reproduced"} <= set(shown["values"])
+    assert {"match", "differs", "not_checkable"} <= set(shown["audit"])
+
+
+def test_headline_reads_published_and_ours(built):
+    verdicts = pd.read_csv(built["results"] / "verdicts.csv", dtype=str, keep_default_na=False)
+    summary = pd.read_csv(built["results"] / "paper" / "rms_summary.csv").set_index("filter")
+    sec = section_html(built["text"], "summary")
+    for r in verdicts[verdicts["kind"] != "claim"].itertuples():
+        ours = fmt3(summary.at[r.method, r.quantity])
+        assert f"<td>{H.escape(r.id)}</td>" in sec
+        assert f"<td>{H.escape(r.published)}</td>" in sec
+        assert f'<td class="num">{ours}</td>' in sec, (r.id, ours)
+    lkf = "/".join(fmt3(summary.at["linear_kf", f"{a}_rms_deg"]) for a in ("roll", "pitch"))
+    assert f"linear_kf roll/pitch RMS {lkf} deg" in sec
+    # every not-upheld claim is stated with its evidence
+    for r in verdicts[verdicts["verdict"] == "not_upheld"].itertuples():
+        assert H.escape(r.reproduced) in sec, r.id
+
+
+def test_every_rms_summary_value_appears_formatted(built):
+    for path in built["summaries"]:
+        name = path.parent.name
+        sec = section_html(built["text"], f"results-{H.slugify(name)}")
+        df = pd.read_csv(path)
+        assert len(df) == len(ALTIMETER_FILTERS)
+        for row in df.itertuples(index=False):
+            cells = [f"<td>{row.filter}</td>"] + [
+                f'<td class="num">{fmt3(getattr(row, c))}</td>' for c in RMS_SUMMARY_COLUMNS[1:-1]
+            ]
+            cells.append(f'<td class="num">{int(row.n_runs)}</td>')
+            assert "".join(cells) in sec, (name, row.filter)
+
+
+def test_differs_rows_highlighted_first_and_escaped(built):
+    sec = section_html(built["text"], "equation-audit")
+    assert sec.count('<tr class="v-differs">') == int((AUDIT["status"] == "differs").sum())
+    rows = re.findall(r'<tr class="v-([a-z_]+)">', sec)
+    assert rows[0] == "differs" and len(rows) == len(AUDIT)
+    assert "Eq. 30.L" in sec
+    assert "&lt;gravity&gt; &amp; &#x27;dt^2&#x27;" in sec and "<gravity>" not in sec
+
+
+def test_images_are_data_uris_and_no_external_urls(built):
+    text = built["text"]
+    p = parse(text)
+    imgs = [a for t, a in p.starts if t == "img"]
+    assert len(imgs) == len(FIGURES) + 1
+    for a in imgs:
+        assert a["src"].startswith("data:image/png;base64,"), a["src"][:40]
+    for t, a in p.starts:
+        assert t not in ("script", "link", "iframe"), t
+        for attr in ("src", "href"):
+            v = (a.get(attr) or "").strip().lower()
+            assert not re.match(r"^(https?:|//|ftp:|file:)", v), (t, attr, v[:60])
+    stripped = re.sub(r'src="data:[^"]*"', "", text)
+    assert "http://" not in stripped and "https://" not in stripped
+
+
+def test_figure_captions_name_the_paper_figure(built):
+    sec = section_html(built["text"], "figures")
+    for name in FIGURES:
+        m = re.match(r"fig(\d+)_", name)
+        if m:
+            assert f"paper Fig. {m.group(1)})" in sec, name
+    assert '<table class="data" id="sweep-table">' in sec
+
+
+def test_sweep_table_holds_every_point(built):
+    sweep = pd.read_csv(built["results"] / "sweep.csv")
+    sec = section_html(built["text"], "sweep")
+    for r in sweep.itertuples():
+        assert f'<td class="num">{fmt3(r.roll_rms_deg)}</td>' in sec
+        assert f'<td class="num">{fmt3(r.pitch_rms_deg)}</td>' in sec
+
+
+def test_findings_are_computed(built):
+    sec = section_html(built["text"], "findings")
+    for path in built["summaries"]:
+        s = pd.read_csv(path).set_index("filter")
+        for angle in ("roll", "pitch"):
+            r = s[f"{angle}_rms_deg"]
+            best = r.idxmin()
+            assert (
+                f"<td>{path.parent.name}</td><td>{angle}</td><td>{best}</td>"
+                f'<td class="num">{fmt3(r.min())}</td>'
+            ) in sec
+            a, b = (
+                s.at["linear_kf", f"{angle}_rms_deg"],
+                s.at["linear_kf_no_gamma", f"{angle}_rms_deg"],
+            )
+            assert f"{100 * (a - b) / b:+.1f} %" in sec
+    sweep = pd.read_csv(built["results"] / "sweep.csv")
+    for (param, filt), g in sweep.groupby(["parameter", "filter"]):
+        for angle in ("roll", "pitch"):
+            lo, hi = g[f"{angle}_rms_deg"].min(), g[f"{angle}_rms_deg"].max()
+            assert f"{filt} {angle} RMS" in sec and f"{fmt3(lo)}–{fmt3(hi)} deg" in sec, param
+
+
+def test_assumptions_show_each_decision_with_its_value(built):
+    sec = section_html(built["text"], "assumptions")
+    for f in sorted(SCEN_DIR.glob("*.yaml")):
+        sc = load_scenario(f)
+        sub = section_html(sec, f"assumptions-{H.slugify(f.stem)}")
+        assert H.escape(str(sc.raw["description"]).strip()) in sub
+        for d in sc.decisions():
+            v = d["value"] if isinstance(d["value"], str) else json.dumps(d["value"])
+            assert f"<td>{H.escape(d['field'])}</td><td>{H.escape(v)}</td>" in sub, d["field"]
+
+
+def test_provenance_shown(built):
+    sec = section_html(built["text"], "provenance")
+    for path in built["summaries"]:
+        prov = json.loads((path.parent / "provenance.json").read_text(encoding="utf-8"))
+        sub = section_html(sec, f"provenance-{H.slugify(path.parent.name)}")
+        assert H.escape(prov["git_describe"]) in sub and prov["config_sha256"] in sub
+        assert f"<dd>{prov['seeds']['seed']}</dd>" in sub
+        for pkg, version in prov["packages"].items():
+            assert f"<td>{H.escape(pkg)}</td><td>{H.escape(version)}</td>" in sub
+
+
+def test_deterministic(built, tmp_path):
+    out = R.build_page(
+        built["results"],
+        SCEN_DIR,
+        tmp_path / "again.html",
+        summaries=built["summaries"],
+        figures_dir=built["figures"],
+    )
+    assert out.read_bytes() == built["out"].read_bytes()
+
+
+def test_missing_audit_and_figures_say_not_available(tmp_path):
+    paths = make_inputs(tmp_path, figures=False, audit=False)
+    text = R.render_page(paths["results"], SCEN_DIR)  # summaries discovered
+    assert parse(text).errors == []
+    assert "equation_audit.csv not available" in text
+    assert f"{FIGURES[0]}: not available" in text and "<img" not in text
+    for s in SECTIONS:
+        assert f'<section id="{s}">' in text
+
+
+def test_missing_verdicts_raise(tmp_path):
+    paths = make_inputs(tmp_path, figures=False)
+    (paths["results"] / "verdicts.csv").unlink()
+    with pytest.raises(FileNotFoundError, match="verdicts.csv"):
+        R.build_page(paths["results"], SCEN_DIR, paths["out"])
+    assert not paths["out"].exists()
+
+
+def test_snakemake_script(tmp_path, monkeypatch):
+    monkeypatch.chdir(REPO)  # the script names the scenario directory relative to the repo
+    paths = make_inputs(tmp_path)
+    out = tmp_path / "smk" / "altimeter_attitude.html"
+    log = tmp_path / "report.log"
+    smk = SimpleNamespace(
+        input=SimpleNamespace(
+            audit=str(paths["results"] / "equation_audit.csv"),
+            verdicts=str(paths["results"] / "verdicts.csv"),
+            summaries=[str(p) for p in paths["summaries"]],
+            sweep=str(paths["results"] / "sweep.csv"),
+            figures=[str(paths["figures"] / f) for f in [*FIGURES, SWEEP_FIGURE]],
+        ),
+        output=[str(out)],
+        log=[str(log)],
+        config={"altimeter_attitude": {"published_scenario": "paper"}},
+    )
+    stderr = sys.stderr
+    try:
+        runpy.run_path(str(REPO / "pipeline/scripts/aa_report.py"), init_globals={"snakemake": smk})
+    finally:
+        sys.stderr = stderr
+    text = out.read_text(encoding="utf-8")
+    assert text.count("data:image/png;base64,") == len(FIGURES) + 1
+    assert "wrote" in log.read_text(encoding="utf-8")

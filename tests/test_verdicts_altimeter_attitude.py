@@ -1,0 +1,128 @@
+"""Verdict rules of the altimeter-attitude paper on synthetic results with known answers."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from pipeline.altimeter_attitude import verdicts
+from pipeline.columns import (
+    RMS_SUMMARY_COLUMNS,
+    RUN_RMS_COLUMNS,
+    TIMESERIES_COLUMNS,
+    VERDICT_COLUMNS,
+)
+
+FILTERS = ("linear_kf", "linear_kf_no_gamma", "ukf", "ekf", "gyro_only", "accel_leveling")
+
+
+def _results(tmp_path, lkf_roll=0.16, ukf_roll=0.40, nees=1.0, ekf_scale=1.0, norm=1e-6):
+    rng = np.random.default_rng(0)
+    n_runs = 50
+    t = np.arange(0.0, 100.0, 0.2)
+    load = np.where((t > 40) & (t < 50), 2.0, 1.0)
+    level = {
+        "linear_kf": lkf_roll,
+        "linear_kf_no_gamma": lkf_roll,
+        "ukf": ukf_roll,
+        "ekf": ukf_roll * ekf_scale,
+        "gyro_only": 2.0,
+        "accel_leveling": 0.5,
+    }
+    runs, summary, series = [], [], []
+    for f in FILTERS:
+        per_run = level[f] * np.sqrt(rng.chisquare(20, n_runs) / 20)
+        runs.append(
+            pd.DataFrame(
+                {
+                    "run": np.arange(n_runs),
+                    "filter": f,
+                    "roll_rms_deg": per_run,
+                    "pitch_rms_deg": per_run / 2,
+                }
+            )
+        )
+        rms = float(np.sqrt(np.mean(per_run**2)))
+        summary.append(
+            {
+                "filter": f,
+                "roll_rms_deg": rms,
+                "pitch_rms_deg": rms / 2,
+                "roll_sigma_deg": rms,
+                "pitch_sigma_deg": rms / 2,
+                "nees_roll": nees,
+                "nees_pitch": nees,
+                "n_runs": n_runs,
+            }
+        )
+        curve = np.full(t.shape, level[f])
+        if f == "accel_leveling":
+            curve = np.where(load > 1, 30.0, 0.5)
+        if f == "gyro_only":
+            curve = 0.2 * np.sqrt(t + 1)
+        if f == "ekf":
+            curve = curve * np.where(t > 90, ekf_scale, 1.0)
+        frame = pd.DataFrame({c: np.nan for c in TIMESERIES_COLUMNS}, index=range(len(t)))
+        frame["t_s"], frame["filter"] = t, f
+        frame["roll_rms_deg"], frame["pitch_rms_deg"] = curve, curve / 2
+        frame["norm_error_rms"] = norm
+        series.append(frame)
+    pd.DataFrame(summary, columns=RMS_SUMMARY_COLUMNS).to_csv(
+        tmp_path / "rms_summary.csv", index=False
+    )
+    pd.concat(runs)[RUN_RMS_COLUMNS].to_csv(tmp_path / "run_rms.csv", index=False)
+    pd.concat(series)[TIMESERIES_COLUMNS].to_csv(tmp_path / "timeseries.csv", index=False)
+    pd.DataFrame({"t_s": t, "load_factor": load}).to_csv(tmp_path / "truth.csv", index=False)
+    return tmp_path
+
+
+@pytest.fixture(scope="module")
+def published():
+    return verdicts.load_published("config/published/altimeter_attitude.yaml")
+
+
+def _by_id(frame):
+    return frame.set_index("id")["verdict"].to_dict()
+
+
+def test_values_consistent_when_equal(published, tmp_path):
+    v = _by_id(verdicts.verdicts(published, _results(tmp_path, lkf_roll=0.16), 10.0))
+    assert v["V1.lkf_roll"] == "consistent"
+    assert v["V2.lkf_pitch"] == "consistent"  # 0.08 vs 0.07: inside 30 % + 2 SE
+    assert v["V3.ukf_roll"] == "not_reproduced"  # 0.40 vs 0.21
+
+
+def test_claims_on_synthetic_results(published, tmp_path):
+    frame = verdicts.verdicts(published, _results(tmp_path), 10.0)
+    assert list(frame.columns) == VERDICT_COLUMNS
+    v = _by_id(frame)
+    assert v["C1.linear_beats_ukf"] == "upheld"  # 0.16 vs 0.40 over 50 runs
+    assert v["C2.lkf_sigma_consistent"] == "upheld"
+    assert v["C4.lkf_error_bounded"] == "upheld"
+    assert v["C5.norm_error_stable"] == "upheld"
+    assert v["C6.leveling_fails"] == "upheld"  # 30 deg vs 0.16 under load
+    assert v["C7.ekf_diverges"] == "not_upheld"
+    assert v["C8.gamma_term_needed"] == "not_upheld"  # identical curves
+
+
+def test_claims_flip_with_the_data(published, tmp_path):
+    v = _by_id(
+        verdicts.verdicts(
+            published,
+            _results(tmp_path, lkf_roll=0.4, ukf_roll=0.2, nees=3.0, ekf_scale=50.0, norm=1e-2),
+            10.0,
+        )
+    )
+    assert v["C1.linear_beats_ukf"] == "not_upheld"
+    assert v["C2.lkf_sigma_consistent"] == "not_upheld"
+    assert v["C5.norm_error_stable"] == "not_upheld"
+    assert v["C7.ekf_diverges"] == "upheld"
+
+
+def test_missing_filter_is_named(published, tmp_path):
+    d = _results(tmp_path)
+    s = pd.read_csv(d / "rms_summary.csv")
+    s[s["filter"] != "ukf"].to_csv(d / "rms_summary.csv", index=False)
+    with pytest.raises(ValueError, match="filter 'ukf' has no results"):
+        verdicts.verdicts(published, d, 10.0)
