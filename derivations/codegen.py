@@ -113,9 +113,15 @@ import numpy as np
 
 
 def _broadcast(*outs):
-    """Broadcast the outputs of a vector function to one common shape."""
-    arrays = np.broadcast_arrays(*(np.asarray(o, dtype=float) for o in outs))
-    return tuple(np.array(a) for a in arrays)
+    """Broadcast the outputs of a vector function to one common shape (fresh arrays)."""
+    arrays = [np.asarray(o, dtype=float) for o in outs]
+    shape = np.broadcast_shapes(*[a.shape for a in arrays])
+    return tuple(
+        np.array(a)
+        if a.shape == shape
+        else (np.full(shape, a.item()) if a.ndim == 0 else np.broadcast_to(a, shape).copy())
+        for a in arrays
+    )
 '''
 
 

@@ -59,7 +59,7 @@ def test_discretisations_match_scipy_expm():
     rng = np.random.default_rng(1)
     a0, gamma = _random_a(rng, (5, 6))
     dt = 0.02
-    chunk = model.ChunkDiscretisation(a0, dt)
+    chunk = model.ChunkDiscretisation(a0[..., :3, :3], a0[..., 3, :3], dt)
     for j in range(6):
         a = a0[:, j] + gamma[:, None, None] * D_GAMMA
         ref = np.stack([sla.expm(m * dt) for m in a])
@@ -78,7 +78,7 @@ def test_chunk_falls_back_for_large_k_gamma():
     rng = np.random.default_rng(2)
     a0, _ = _random_a(rng, (3, 2))
     gamma = np.array([0.5, -0.3, 0.1])  # k gamma dt far beyond A_DT_MAX
-    F = model.ChunkDiscretisation(a0, 0.02).transition(1, gamma)
+    F = model.ChunkDiscretisation(a0[..., :3, :3], a0[..., 3, :3], 0.02).transition(1, gamma)
     ref = np.stack([sla.expm((a0[i, 1] + gamma[i] * D_GAMMA) * 0.02) for i in range(3)])
     np.testing.assert_allclose(F, ref, atol=1e-13)
 
@@ -257,3 +257,12 @@ def test_euler_maps_round_trip():
     back = gen.euler_from_third_row(*(1.3 * c).T)  # scale-invariant
     np.testing.assert_allclose(back[0], phi, atol=1e-14)
     np.testing.assert_allclose(back[1], theta, atol=1e-14)
+
+
+def test_a_blocks_equal_the_generated_matrix():
+    rng = np.random.default_rng(7)
+    gyro, accel = rng.normal(size=(4, 5, 3)), rng.normal(size=(4, 5, 3))
+    a = model.matrix_a(gyro, accel, 1.0, np.zeros((4, 5)))
+    w, f = model.a_blocks(gyro, accel)
+    np.testing.assert_allclose(w, a[..., :3, :3], atol=1e-15)
+    np.testing.assert_allclose(f, a[..., 3, :3], atol=1e-15)

@@ -108,6 +108,13 @@ def functions() -> list[GeneratedFunction]:
             "d(UKF model)/d[n_w, n_a] (4 x 6, row by row): sensor noise to state rates.",
         ),
         _fn(
+            "euler_process_noise",
+            (s.phi, s.theta, s.dt, *sp.symbols("sigma_g2 sigma_a2", positive=True)),
+            _flat(model.euler_process_noise()),
+            "dt^2 J Sigma J^T (4 x 4, row by row): per-step process noise of the UKF/EKF model\n"
+            "    for per-sample gyro/accelerometer variances sigma_g2, sigma_a2.",
+        ),
+        _fn(
             "euler_state_jacobian",
             (s.phi, s.theta, *inputs),
             _flat(model.euler_state_jacobian()),

@@ -45,6 +45,7 @@ __all__ = [
     "euler_state",
     "euler_model_rhs",
     "euler_noise_jacobian",
+    "euler_process_noise",
     "euler_state_jacobian",
 ]
 
@@ -150,6 +151,16 @@ def euler_model_rhs(noise: bool = False) -> sp.Matrix:
 def euler_noise_jacobian() -> sp.Matrix:
     """d(UKF rhs)/dw at w = 0 (4 x 6): maps sensor noise to the Euler-model state rates."""
     return euler_model_rhs(noise=True).jacobian(s.w).subs(dict.fromkeys(s.w, 0))
+
+
+def euler_process_noise() -> sp.Matrix:
+    """dt^2 J Sigma J^T (4 x 4): the per-step process noise of the UKF/EKF model, with
+    J = :func:`euler_noise_jacobian` and Sigma = diag(sigma_g^2 I3, sigma_a^2 I3) per sample
+    (first order in dt, the counterpart of the linear filter's G Q G^T with G = dt C)."""
+    sg2, sa2 = sp.symbols("sigma_g2 sigma_a2", positive=True)
+    J = euler_noise_jacobian()
+    sigma = sp.diag(sg2, sg2, sg2, sa2, sa2, sa2)
+    return (s.dt**2 * J * sigma * J.T).applyfunc(sp.simplify)
 
 
 def euler_state_jacobian() -> sp.Matrix:

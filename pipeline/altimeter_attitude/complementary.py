@@ -58,8 +58,8 @@ def run_complementary(
     c = np.stack(gen.third_row_from_euler(phi0, theta0), -1)
     z = np.zeros_like(c)
     N, T = inputs.n_runs, inputs.n_steps
-    cs = np.empty((N, T + 1, 3))
-    cs[:, 0] = c
+    cs = np.empty((T + 1, N, 3))  # time-major while filling
+    cs[0] = c
     for step in range(T):
         f = inputs.accel[:, step]
         c_a = np.stack(gen.accel_third_row(f[:, 0], f[:, 1], f[:, 2]), -1)
@@ -67,8 +67,8 @@ def run_complementary(
         c = rotate_third_row(c, inputs.gyro[:, step], dt) + dt * (k_p * e + k_i * z)
         z = z + dt * e
         c = c / np.linalg.norm(c, axis=-1, keepdims=True)
-        cs[:, step + 1] = c
-    return _to_estimates(name, cs)
+        cs[step + 1] = c
+    return _to_estimates(name, np.ascontiguousarray(np.swapaxes(cs, 0, 1)))
 
 
 def run_accel_leveling(inputs: Inputs, name: str = "accel_leveling") -> Estimates:

@@ -25,33 +25,26 @@ __all__ = ["rk4_step", "process_noise", "run_ukf", "run_ekf", "Q_FLOOR"]
 Q_FLOOR = 1e-12  # added to the process noise diagonal (keeps Q positive definite)
 
 
-def _rhs(x: np.ndarray, gyro: np.ndarray, accel: np.ndarray, g: float) -> np.ndarray:
-    out = gen.euler_model_rhs(
-        x[..., 0],
-        x[..., 1],
-        x[..., 2],
-        x[..., 3],
-        *np.moveaxis(gyro, -1, 0),
-        *np.moveaxis(accel, -1, 0),
-        g,
-    )
+def _rhs(x: np.ndarray, gyro: tuple, accel: tuple, g: float) -> np.ndarray:
+    out = gen.euler_model_rhs(x[..., 0], x[..., 1], x[..., 2], x[..., 3], *gyro, *accel, g)
     return np.stack(out, -1)
 
 
 def rk4_step(x: np.ndarray, dt: float, gyro: np.ndarray, accel: np.ndarray, g: float) -> np.ndarray:
     """One RK4 step of the Euler model for states x (..., 4) and inputs broadcast to them."""
-    k1 = _rhs(x, gyro, accel, g)
-    k2 = _rhs(x + 0.5 * dt * k1, gyro, accel, g)
-    k3 = _rhs(x + 0.5 * dt * k2, gyro, accel, g)
-    k4 = _rhs(x + dt * k3, gyro, accel, g)
+    gyro_c = tuple(np.moveaxis(np.asarray(gyro), -1, 0))
+    accel_c = tuple(np.moveaxis(np.asarray(accel), -1, 0))
+    k1 = _rhs(x, gyro_c, accel_c, g)
+    k2 = _rhs(x + 0.5 * dt * k1, gyro_c, accel_c, g)
+    k3 = _rhs(x + 0.5 * dt * k2, gyro_c, accel_c, g)
+    k4 = _rhs(x + dt * k3, gyro_c, accel_c, g)
     return x + dt / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
 
 
 def process_noise(x: np.ndarray, dt: float, gyro_sigma: float, accel_sigma: float) -> np.ndarray:
-    """Q_k (N, 4, 4) = dt^2 J Sigma J^T + Q_FLOOR I at the estimates x (N, 4)."""
-    J = np.stack(gen.euler_noise_jacobian(x[:, 0], x[:, 1]), -1).reshape(-1, 4, 6)
-    sig = np.array([gyro_sigma**2] * 3 + [accel_sigma**2] * 3)
-    return dt**2 * (J * sig) @ np.swapaxes(J, -1, -2) + Q_FLOOR * np.eye(4)
+    """Q_k (N, 4, 4) = dt^2 J Sigma J^T + Q_FLOOR I at the estimates x (N, 4) (generated)."""
+    q = gen.euler_process_noise(x[:, 0], x[:, 1], dt, gyro_sigma**2, accel_sigma**2)
+    return np.stack(q, -1).reshape(-1, 4, 4) + Q_FLOOR * np.eye(4)
 
 
 def _initial(inputs: Inputs) -> tuple[np.ndarray, np.ndarray]:
@@ -83,9 +76,9 @@ def run_ukf(
     R = np.array([[sens.altimeter_sigma**2]])
     x, P = _initial(inputs)
     N, T = inputs.n_runs, inputs.n_steps
-    xs = np.empty((N, T + 1, 4))
-    Ps = np.empty((N, T + 1, 2, 2))
-    xs[:, 0], Ps[:, 0] = x, P[:, :2, :2]
+    xs = np.empty((T + 1, N, 4))  # time-major while filling (contiguous writes)
+    Ps = np.empty((T + 1, N, 2, 2))
+    xs[0], Ps[0] = x, P[:, :2, :2]
 
     def fx(sig, dt_, gyro, accel):
         return rk4_step(sig, dt_, gyro[:, None, :], accel[:, None, :], g)
@@ -100,9 +93,9 @@ def run_ukf(
         z = inputs.altimeter[:, step + 1]
         if not np.isnan(z[0]):
             x, P, _, _ = ukf.update(x, P, sig_f, z[:, None], hx, R, weights)
-        xs[:, step + 1] = x
-        Ps[:, step + 1] = P[:, :2, :2]
-    return _estimates(name, xs, Ps)
+        xs[step + 1] = x
+        Ps[step + 1] = P[:, :2, :2]
+    return _estimates(name, np.swapaxes(xs, 0, 1), np.swapaxes(Ps, 0, 1))
 
 
 def run_ekf(inputs: Inputs, name: str = "ekf") -> Estimates:
@@ -111,9 +104,9 @@ def run_ekf(inputs: Inputs, name: str = "ekf") -> Estimates:
     R = sens.altimeter_sigma**2
     x, P = _initial(inputs)
     N, T = inputs.n_runs, inputs.n_steps
-    xs = np.empty((N, T + 1, 4))
-    Ps = np.empty((N, T + 1, 2, 2))
-    xs[:, 0], Ps[:, 0] = x, P[:, :2, :2]
+    xs = np.empty((T + 1, N, 4))  # time-major while filling (contiguous writes)
+    Ps = np.empty((T + 1, N, 2, 2))
+    xs[0], Ps[0] = x, P[:, :2, :2]
     eye = np.eye(4)
     for step in range(T):
         gyro, accel = inputs.gyro[:, step], inputs.accel[:, step]
@@ -135,6 +128,6 @@ def run_ekf(inputs: Inputs, name: str = "ekf") -> Estimates:
             ikh = eye - K[:, :, None] * eye[3][None, None, :]
             P = ikh @ P @ np.swapaxes(ikh, -1, -2) + R * K[:, :, None] * K[:, None, :]
         P = 0.5 * (P + np.swapaxes(P, -1, -2))
-        xs[:, step + 1] = x
-        Ps[:, step + 1] = P[:, :2, :2]
-    return _estimates(name, xs, Ps)
+        xs[step + 1] = x
+        Ps[step + 1] = P[:, :2, :2]
+    return _estimates(name, np.swapaxes(xs, 0, 1), np.swapaxes(Ps, 0, 1))

@@ -94,18 +94,21 @@ def run_linear_kf(
     use_gamma = np.repeat([VARIANTS[v][0] for v in variants], n1).astype(float)
     use_update = np.repeat([VARIANTS[v][1] for v in variants], n1)
     N, T = x.shape[0], inputs.n_steps
-    xs = np.empty((N, T + 1, 5))
-    Ps = np.empty((N, T + 1, 3, 3))
-    xs[:, 0], Ps[:, 0] = x, P[:, :3, :3]
+    xs = np.empty((T + 1, N, 5))  # time-major while filling (contiguous writes)
+    var = np.empty((T + 1, N, 2))  # roll/pitch variances J P_cc J^T (diagonal)
+
+    def euler_var(x, P):
+        cov = model.euler_cov_from_third_row(x[:, :3], P[:, :3, :3])
+        return np.stack([cov[:, 0, 0], cov[:, 1, 1]], -1)
+
+    xs[0], var[0] = x, euler_var(x, P)
     L = model.input_vector(dt, input_matrix)
     for c0 in range(0, T, chunk):
         c1 = min(T, c0 + chunk)
         gyro = np.tile(inputs.gyro[:, c0:c1], (V, 1, 1))
         accel = np.tile(inputs.accel[:, c0:c1], (V, 1, 1))
         # eq. 26 at gamma = 0 for the whole chunk; k gamma enters per step (eq. 30)
-        disc = model.ChunkDiscretisation(
-            model.matrix_a(gyro, accel, k, np.zeros(gyro.shape[:2])), dt
-        )
+        disc = model.ChunkDiscretisation(*model.a_blocks(gyro, accel), dt)
         for j, step in enumerate(range(c0, c1)):
             gamma = 1.0 - np.einsum("ni,ni->n", x[:, :3], x[:, :3])  # eq. 15 at xhat_{k-1|k-1}
             F = disc.transition(j, k * gamma)
@@ -123,11 +126,11 @@ def run_linear_kf(
                 x = x + K * (zz - x[:, 4])[:, None]
                 P = P - K[:, :, None] * P[:, None, 4, :]  # (I - K H) P
             P = 0.5 * (P + np.swapaxes(P, -1, -2))
-            xs[:, step + 1] = x
-            Ps[:, step + 1] = P[:, :3, :3]
-    c = xs[:, :, :3]
+            xs[step + 1] = x
+            var[step + 1] = euler_var(x, P)
+    c = np.ascontiguousarray(np.swapaxes(xs[:, :, :3], 0, 1))
+    var = np.swapaxes(var, 0, 1)
     phi, theta = gen.euler_from_third_row(c[..., 0], c[..., 1], c[..., 2])
-    cov = model.euler_cov_from_third_row(c, Ps)
     out = []
     for i, name in enumerate(variants):
         sl = slice(i * n1, (i + 1) * n1)
@@ -136,8 +139,8 @@ def run_linear_kf(
                 filter=name,
                 roll=phi[sl],
                 pitch=theta[sl],
-                roll_sigma=np.sqrt(cov[sl, :, 0, 0]),
-                pitch_sigma=np.sqrt(cov[sl, :, 1, 1]),
+                roll_sigma=np.sqrt(var[sl, :, 0]),
+                pitch_sigma=np.sqrt(var[sl, :, 1]),
                 c=c[sl],
                 norm_error=1.0 - np.einsum("nti,nti->nt", c[sl], c[sl]),
             )

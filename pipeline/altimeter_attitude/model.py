@@ -19,6 +19,7 @@ from pipeline.generated import altimeter_attitude as gen
 __all__ = [
     "GAMMA_COLUMNS",
     "matrix_a",
+    "a_blocks",
     "noise_matrix",
     "expm_taylor",
     "discretise",
@@ -43,6 +44,30 @@ def matrix_a(gyro: np.ndarray, accel: np.ndarray, k: float, gamma: np.ndarray) -
     """eq. 26: A (N, 5, 5) for gyro/accel outputs (N, 3) and gamma (N,)."""
     flat = gen.model_matrix_a(*np.moveaxis(gyro, -1, 0), *np.moveaxis(accel, -1, 0), k, gamma)
     return np.moveaxis(np.asarray(flat), 0, -1).reshape(*gamma.shape, 5, 5)
+
+
+def _input_basis() -> np.ndarray:
+    """A of eq. 26 is linear in the IMU outputs: basis (6, 5, 5) with A(omega, f, gamma = 0)
+    = sum_i u_i basis[i], u = [omega, f], read off the generated matrix at unit inputs."""
+    eye = np.eye(6)
+    zero = matrix_a(np.zeros((1, 3)), np.zeros((1, 3)), 1.0, np.zeros(1))[0]
+    out = np.stack(
+        [
+            matrix_a(eye[i : i + 1, :3], eye[i : i + 1, 3:], 1.0, np.zeros(1))[0] - zero
+            for i in range(6)
+        ]
+    )
+    # the constant part (the -1 of h_dot = -V_d) is not an input term
+    return out
+
+
+def a_blocks(gyro: np.ndarray, accel: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The c block (..., 3, 3) and the f row (..., 3) of eq. 26's A at gamma = 0, for IMU
+    outputs of any leading shape, from the generated matrix's linear basis."""
+    basis = _INPUT_BASIS
+    w = np.einsum("...i,iab->...ab", gyro, basis[:3, :3, :3])
+    f = np.einsum("...i,ib->...b", accel, basis[3:, 3, :3])
+    return w, f
 
 
 def noise_matrix(c: np.ndarray) -> np.ndarray:
@@ -204,22 +229,30 @@ class ChunkDiscretisation:
 
     A_DT_MAX = 1e-4
 
-    def __init__(self, a0: np.ndarray, dt: float, order: int = 24) -> None:
-        # a0: (N, C, 5, 5), A at gamma = 0 for C consecutive steps
-        self.a0, self.dt = a0, dt
-        w = a0[..., :3, :3] * dt  # W dt, skew-symmetric (eq. 26 at gamma = 0)
+    def __init__(
+        self, w_block: np.ndarray, f_row: np.ndarray, dt: float, tol: float = 1e-17
+    ) -> None:
+        # w_block (N, C, 3, 3): the c block of A at gamma = 0 (W = -[omega x]); f_row (N, C, 3)
+        self.w_block, self.f_row, self.dt = w_block, f_row, dt
+        w = w_block * dt  # W dt, skew-symmetric (eq. 26 at gamma = 0)
         w2 = w @ w
-        f = a0[..., 3, :3]
+        f = f_row
         # a power series sum_i c_i (W dt)^i of a skew W collapses to c_0 I + A1 W dt +
         # A2 (W dt)^2, since (W dt)^3 = -theta^2 W dt with theta = |omega| dt (Rodrigues)
         theta2 = -0.5 * np.trace(w2, axis1=-2, axis2=-1)
-        if float(theta2.max(initial=0.0)) > 0.25:
+        theta_max = float(np.sqrt(theta2.max(initial=0.0)))
+        if theta_max > 0.5:
             raise ValueError(
-                f"rotation per step |omega| dt = {np.sqrt(theta2.max()):.3g} rad: must be <= 0.5 "
-                "(the series below are summed to a fixed order)"
+                f"rotation per step |omega| dt = {theta_max:.3g} rad: must be <= 0.5 "
+                "(the series below are summed term by term)"
             )
+        # order: first i with theta^(i+1) / (i+1)! < tol (the coefficients below are <= 1/i!)
+        order, term = 2, theta_max**3 / 6.0
+        while term > tol and order < 40:
+            order += 1
+            term *= theta_max / (order + 1)
         powers = [np.ones_like(theta2)]
-        for _ in range(order // 2):
+        for _ in range(order // 2 + 1):
             powers.append(powers[-1] * -theta2)
 
         def collapse(coeff):
@@ -228,9 +261,10 @@ class ChunkDiscretisation:
             a2 = sum(coeff(i) * powers[(i - 2) // 2] for i in range(2, order + 1, 2))
             return c0, a1, a2
 
+        fw = np.einsum("nci,ncij->ncj", f, w)
+        fw2 = np.einsum("nci,ncij->ncj", f, w2)
+
         def apply_f(c0, a1, a2):  # f^T (c0 I + a1 W dt + a2 (W dt)^2)
-            fw = np.einsum("nci,ncij->ncj", f, w)
-            fw2 = np.einsum("nci,ncij->ncj", f, w2)
             return c0 * f + a1[..., None] * fw + a2[..., None] * fw2
 
         inv_fact = [1.0 / math.factorial(i) for i in range(order + 1)]
@@ -256,9 +290,11 @@ class ChunkDiscretisation:
     def transition(self, j: int, a: np.ndarray) -> np.ndarray:
         """F (N, 5, 5) of step j of the chunk for a = k gamma (N,)."""
         if np.abs(a).max() * self.dt > self.A_DT_MAX:
-            d = np.zeros((5, 5))
-            d[:3, :3] = np.eye(3)
-            return discretise_structured(self.a0[:, j] + a[:, None, None] * d, self.dt)[0]
+            full = np.zeros((a.shape[0], 5, 5))
+            full[:, :3, :3] = self.w_block[:, j] + a[:, None, None] * np.eye(3)
+            full[:, 3, :3] = self.f_row[:, j]
+            full[:, 4, 3] = -1.0
+            return discretise_structured(full, self.dt)[0]
         n = a.shape[0]
         F = np.zeros((n, 5, 5))
         F[:, :3, :3] = np.exp(a * self.dt)[:, None, None] * self.exp_w[:, j]
@@ -302,3 +338,6 @@ def euler_cov_from_third_row(c: np.ndarray, P_c: np.ndarray) -> np.ndarray:
     J = np.moveaxis(np.asarray(gen.euler_jacobian_third_row(*np.moveaxis(c, -1, 0))), 0, -1)
     J = J.reshape(*c.shape[:-1], 2, 3)
     return J @ P_c @ np.swapaxes(J, -1, -2)
+
+
+_INPUT_BASIS = _input_basis()

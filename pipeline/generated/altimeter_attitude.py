@@ -14,11 +14,17 @@ import numpy as np
 
 
 def _broadcast(*outs):
-    """Broadcast the outputs of a vector function to one common shape."""
-    arrays = np.broadcast_arrays(*(np.asarray(o, dtype=float) for o in outs))
-    return tuple(np.array(a) for a in arrays)
+    """Broadcast the outputs of a vector function to one common shape (fresh arrays)."""
+    arrays = [np.asarray(o, dtype=float) for o in outs]
+    shape = np.broadcast_shapes(*[a.shape for a in arrays])
+    return tuple(
+        np.array(a)
+        if a.shape == shape
+        else (np.full(shape, a.item()) if a.ndim == 0 else np.broadcast_to(a, shape).copy())
+        for a in arrays
+    )
 
-__all__ = ['model_matrix_a', 'noise_matrix_c', 'noise_gamma', 'normalisation_error', 'third_row_from_euler', 'euler_from_third_row', 'euler_jacobian_third_row', 'euler_model_rhs', 'euler_noise_jacobian', 'euler_state_jacobian', 'accel_third_row', 'leveling_angles', 'pi_gains']
+__all__ = ['model_matrix_a', 'noise_matrix_c', 'noise_gamma', 'normalisation_error', 'third_row_from_euler', 'euler_from_third_row', 'euler_jacobian_third_row', 'euler_model_rhs', 'euler_noise_jacobian', 'euler_process_noise', 'euler_state_jacobian', 'accel_third_row', 'leveling_angles', 'pi_gains']
 
 
 def model_matrix_a(omegat_x, omegat_y, omegat_z, ft_x, ft_y, ft_z, k, gamma):
@@ -331,6 +337,30 @@ def euler_noise_jacobian(phi, theta):
     out22 = 0
     out23 = 0
     return _broadcast(out0, out1, out2, out3, out4, out5, out6, out7, out8, out9, out10, out11, out12, out13, out14, out15, out16, out17, out18, out19, out20, out21, out22, out23)
+
+
+def euler_process_noise(phi, theta, dt, sigma_g2, sigma_a2):
+    """dt^2 J Sigma J^T (4 x 4, row by row): per-step process noise of the UKF/EKF model
+    for per-sample gyro/accelerometer variances sigma_g2, sigma_a2."""
+    _x0 = dt**2
+    _x1 = _x0*sigma_g2
+    out0 = _x1/np.cos(theta)**2
+    out1 = 0
+    out2 = 0
+    out3 = 0
+    out4 = 0
+    out5 = _x1
+    out6 = 0
+    out7 = 0
+    out8 = 0
+    out9 = 0
+    out10 = _x0*sigma_a2
+    out11 = 0
+    out12 = 0
+    out13 = 0
+    out14 = 0
+    out15 = 0
+    return _broadcast(out0, out1, out2, out3, out4, out5, out6, out7, out8, out9, out10, out11, out12, out13, out14, out15)
 
 
 def euler_state_jacobian(phi, theta, omegat_x, omegat_y, omegat_z, ft_x, ft_y, ft_z):

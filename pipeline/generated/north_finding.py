@@ -12,9 +12,15 @@ import numpy as np
 
 
 def _broadcast(*outs):
-    """Broadcast the outputs of a vector function to one common shape."""
-    arrays = np.broadcast_arrays(*(np.asarray(o, dtype=float) for o in outs))
-    return tuple(np.array(a) for a in arrays)
+    """Broadcast the outputs of a vector function to one common shape (fresh arrays)."""
+    arrays = [np.asarray(o, dtype=float) for o in outs]
+    shape = np.broadcast_shapes(*[a.shape for a in arrays])
+    return tuple(
+        np.array(a)
+        if a.shape == shape
+        else (np.full(shape, a.item()) if a.ndim == 0 else np.broadcast_to(a, shape).copy())
+        for a in arrays
+    )
 
 __all__ = ['specific_force_b', 'angular_rate_b', 'l1_sin_theta', 'l1_sin_phi', 'l2_design_row', 'l3_sin_theta', 'l3_sin_phi', 'l4_design_row', 'l5_bias', 'l5_components', 'l5_scale', 'l5_scale_approx', 'a1c1_cos_psi', 'a1c2_coeffs', 'a2_coeffs', 'sinusoid_roots', 'a3_peak', 'a3_eq47_coeffs', 'a3_quartic_coeffs', 'a3_eq47_residual', 'a4_bias', 'a4_omegas', 'a4_coeffs', 'a4_scale', 'a5_coeffs', 'a5_scale_roots', 'a5_scale_approx', 'a5_cos_psi', 'a6_omega3', 'a6_scale', 'a6_scale_approx']
 

@@ -13,9 +13,15 @@ import numpy as np
 
 
 def _broadcast(*outs):
-    """Broadcast the outputs of a vector function to one common shape."""
-    arrays = np.broadcast_arrays(*(np.asarray(o, dtype=float) for o in outs))
-    return tuple(np.array(a) for a in arrays)
+    """Broadcast the outputs of a vector function to one common shape (fresh arrays)."""
+    arrays = [np.asarray(o, dtype=float) for o in outs]
+    shape = np.broadcast_shapes(*[a.shape for a in arrays])
+    return tuple(
+        np.array(a)
+        if a.shape == shape
+        else (np.full(shape, a.item()) if a.ndim == 0 else np.broadcast_to(a, shape).copy())
+        for a in arrays
+    )
 
 __all__ = ['motion_rates', 'gravity_spherical', 'platform_commands_rates', 'oscillation_rates', 'position_rates', 'specific_force_platform', 'specific_force_platform_linear', 'specific_force_stationary', 'tilt_kinematics_stationary', 'k_sh_stationary', 'alpha_deflection', 'alignment_tilts', 'r_alignment', 'nav_initial_tilt_rates', 'error_ch1', 'error_ch3', 'schuler_period', 'table2_accel_bias', 'table2_initial_tilt', 'table2_scale_factor', 'table2_gyro_drift', 'table2_azimuth_drift', 'table2_initial_velocity', 'table2_initial_azimuth']
 

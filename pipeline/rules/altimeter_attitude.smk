@@ -151,6 +151,7 @@ rule altimeter_attitude_report:
         audit=f"{AA}/equation_audit.csv",
         verdicts=f"{AA}/verdicts.csv",
         summaries=expand(f"{AA}/{{scenario}}/rms_summary.csv", scenario=AA_SCENARIOS),
+        noise_free=expand(f"{AA}/{{scenario}}/noise_free.csv", scenario=AA_SCENARIOS),
         sweep=f"{AA}/sweep.csv",
         figures=[f"{AA}/figures/{f}" for f in AA_FIGURES + [AA_SWEEP_FIGURE]],
     output:
