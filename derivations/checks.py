@@ -28,7 +28,7 @@ right side of ``quantity = ...``, whichever the check states.
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -42,6 +42,8 @@ __all__ = [
     "numeric_residual",
     "audit_frame",
     "audit_main",
+    "audit_outputs",
+    "math_record",
     "STATUSES",
 ]
 
@@ -65,12 +67,15 @@ class Check:
 
 @dataclass(frozen=True)
 class AuditRow:
-    """A row of ``equation_audit.csv``."""
+    """A row of ``equation_audit.csv``; the expressions (not in the CSV) feed the reports."""
 
     equation: str
     status: str
     residual: str
     note: str
+    printed_expr: Any = field(default=None, compare=False, repr=False)
+    derived_expr: Any = field(default=None, compare=False, repr=False)
+    residual_expr: Any = field(default=None, compare=False, repr=False)
 
     def as_dict(self) -> dict[str, str]:
         return {
@@ -181,18 +186,20 @@ def run_check(check: Check) -> AuditRow:
         )
         for p, d in zip(printed, derived, strict=True)
     ]
+    exprs = {"printed_expr": check.printed, "derived_expr": check.derived}
     if all(r == 0 for r in raw):
-        return AuditRow(check.equation, "match", "0", check.if_match)
+        return AuditRow(check.equation, "match", "0", check.if_match, **exprs)
     err = numeric_residual(raw, scales, check.sample)
     if err < REL_TOL:
         note = check.if_match or "zero numerically at 40 random points"
-        return AuditRow(check.equation, "match", "0", note)
+        return AuditRow(check.equation, "match", "0", note, **exprs)
     simplified = [_tidy(r) for r in raw]
     if all(r == 0 for r in simplified):
-        return AuditRow(check.equation, "match", "0", check.if_match)
+        return AuditRow(check.equation, "match", "0", check.if_match, **exprs)
     text = "; ".join(str(r) for r in simplified) if len(simplified) > 1 else str(simplified[0])
     note = check.if_differs or "differs: no judgement recorded"
-    return AuditRow(check.equation, "differs", text, note)
+    residual = simplified[0] if len(simplified) == 1 else sp.Matrix(simplified)
+    return AuditRow(check.equation, "differs", text, note, residual_expr=residual, **exprs)
 
 
 def run_audit(checks: Iterable[Check]) -> list[AuditRow]:
@@ -204,6 +211,54 @@ def run_audit(checks: Iterable[Check]) -> list[AuditRow]:
             raise ValueError(f"equation {r.equation} audited twice")
         seen.add(r.equation)
     return rows
+
+
+def _mathml(obj: Any) -> str | None:
+    """Presentation MathML (one ``<math>`` element per part) of an expression, a matrix or a
+    tuple of them; None if there is nothing to show or SymPy cannot print it."""
+    from sympy.printing.mathml import mathml
+
+    if obj is None:
+        return None
+    parts = list(obj) if isinstance(obj, (tuple, list)) else [obj]
+    out = []
+    for part in parts:
+        try:
+            body = mathml(sp.sympify(part), printer="presentation")
+        except Exception:  # noqa: BLE001 - an unprintable expression is shown as text instead
+            return None
+        out.append(f'<math xmlns="http://www.w3.org/1998/Math/MathML">{body}</math>')
+    return ", ".join(out)
+
+
+def _srepr(obj: Any) -> str | None:
+    if obj is None:
+        return None
+    try:
+        return sp.srepr(obj if not isinstance(obj, list) else tuple(obj))
+    except Exception:  # noqa: BLE001
+        return None
+
+
+def math_record(row: AuditRow) -> dict[str, Any]:
+    """The printed, derived and residual forms of one audit row as MathML and SymPy srepr."""
+    rec: dict[str, Any] = {"equation": row.equation, "status": row.status}
+    for key in ("printed", "derived", "residual"):
+        obj = getattr(row, f"{key}_expr")
+        rec[f"{key}_mathml"] = _mathml(obj)
+        rec[f"{key}_srepr"] = _srepr(obj)
+    return rec
+
+
+def audit_outputs(checks: Iterable[Check]):
+    """(DataFrame with the contract columns, list of math records) from one audit run."""
+    import pandas as pd
+
+    from pipeline.columns import AUDIT_COLUMNS
+
+    rows = run_audit(checks)
+    frame = pd.DataFrame([r.as_dict() for r in rows], columns=AUDIT_COLUMNS)
+    return frame, [math_record(r) for r in rows]
 
 
 def audit_frame(checks: Iterable[Check]):

@@ -217,8 +217,12 @@ def test_ukf_covariance_stays_positive_definite(short_scenario):
 
 def test_complementary_converges_to_accelerometer_attitude_in_cruise():
     """Eq. 19: in unaccelerated flight the PI loop settles on c_a (here the truth)."""
+    from pipeline.altimeter_attitude.scenario import build_scenario
+
     base = load_scenario("config/scenarios/altimeter_attitude/gentle_cruise.yaml")
-    sc = variant(base, "intensity", 0.0)
+    raw = {**base.raw, "trajectory": {**base.raw["trajectory"], "duration_s": 200.0}}
+    raw["trajectory"]["maneuvers"] = []
+    sc = build_scenario(raw, base.path)
     inp = simulate_inputs(sc.profiles, sc.sensors, sc.initial, 1, sc.seed, sc.name, noise_scale=0.0)
     inp = inp.__class__(**{**inp.__dict__, "x0_euler": inp.x0_euler + [0.1, -0.1, 0, 0]})
     est = complementary.run_complementary(inp, 0.1, 1 / np.sqrt(2))

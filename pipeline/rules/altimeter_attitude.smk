@@ -46,7 +46,8 @@ rule altimeter_attitude_audit:
         AA_DERIVATIONS,
         "derivations/checks.py",
     output:
-        f"{AA}/equation_audit.csv",
+        csv=f"{AA}/equation_audit.csv",
+        math=f"{AA}/equation_math.json",
     params:
         audit="derivations.altimeter_attitude.audit",
     log:

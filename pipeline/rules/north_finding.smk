@@ -47,7 +47,8 @@ rule north_finding_audit:
         "derivations/north_finding/printed.py",
         "derivations/north_finding/audit.py",
     output:
-        f"{NF}/equation_audit.csv",
+        csv=f"{NF}/equation_audit.csv",
+        math=f"{NF}/equation_math.json",
     params:
         audit="derivations.north_finding.audit",
     log:

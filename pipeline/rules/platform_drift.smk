@@ -49,7 +49,8 @@ rule platform_drift_audit:
         PD_DERIVATIONS,
         "derivations/checks.py",
     output:
-        f"{PD}/equation_audit.csv",
+        csv=f"{PD}/equation_audit.csv",
+        math=f"{PD}/equation_math.json",
     params:
         audit="derivations.platform_drift.audit",
     log:
