@@ -10,7 +10,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-__all__ = ["scenario_names", "validate_all"]
+__all__ = ["scenario_names", "validate_all", "decisions_with_values", "whole_multiple"]
 
 
 def scenario_names(directory: str | Path) -> list[str]:
@@ -25,3 +25,17 @@ def validate_all(names: list[str], directory: str | Path, load: Callable[[Path],
     """Load (and so validate) every named scenario; the first bad file raises its ConfigError."""
     for name in names:
         load(Path(directory) / f"{name}.yaml")
+
+
+def decisions_with_values(raw: dict[str, Any], path: str | Path) -> list[dict[str, Any]]:
+    """A scenario's ``decisions`` (field, text), each with the value found at its field;
+    ConfigError (naming the file) if a decision names a field the scenario does not have."""
+    from pipeline.config import dotted_get
+
+    return [{**d, "value": dotted_get(raw, d["field"], path)} for d in raw.get("decisions", [])]
+
+
+def whole_multiple(value: float, step: float) -> bool:
+    """True if ``value`` is a whole number of ``step`` (to 1e-9 relative)."""
+    n = value / step
+    return abs(n - round(n)) <= 1e-9 * max(1.0, abs(n))

@@ -48,6 +48,7 @@ from matplotlib.ticker import (  # noqa: E402
     NullFormatter,
 )
 
+from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
 from pipeline.atomic import write_bytes  # noqa: E402
 from pipeline.columns import (  # noqa: E402
     ALTIMETER_FILTERS,
@@ -761,24 +762,6 @@ def _figure_makers(
         ),
         "fig_compare_filters.png": lambda: compare_filters(ts, stats, man),
     }
-
-
-# names of the scenario figures (pipeline.altimeter_attitude.workflow.FIGURES lists the same)
-FIGURES = [
-    "fig2_third_row.png",
-    "fig3_specific_force.png",
-    "fig4_vertical_channel.png",
-    "fig5_angular_rates.png",
-    "fig6_roll_pitch.png",
-    "fig7_lkf_rms_error.png",
-    "fig8_lkf_c_rms.png",
-    "fig9_lkf_sigma.png",
-    "fig10_norm_error.png",
-    "fig11_ukf_sigma.png",
-    "fig12_ukf_rms_error.png",
-    "fig_compare_filters.png",
-]
-SWEEP_FIGURE = "fig_sweep.png"
 
 
 def write_all(

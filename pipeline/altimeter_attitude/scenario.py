@@ -16,7 +16,8 @@ from typing import Any
 
 from pipeline.altimeter_attitude.sensors import InitialSpec, SensorSpec
 from pipeline.altimeter_attitude.trajectory import Profiles
-from pipeline.config import ConfigError, dotted_get, load_schema, load_yaml, sha256_of, validate
+from pipeline.config import ConfigError, load_schema, load_yaml, sha256_of, validate
+from pipeline.scenarios import decisions_with_values, whole_multiple
 
 __all__ = ["Scenario", "load_scenario", "build_scenario", "DEG", "ROOT"]
 
@@ -58,21 +59,13 @@ class Scenario:
 
     def decisions(self) -> list[dict[str, Any]]:
         """Each decision with the value found at its field (ConfigError if the field is missing)."""
-        return [
-            {**d, "value": dotted_get(self.raw, d["field"], self.path)}
-            for d in self.raw.get("decisions", [])
-        ]
+        return decisions_with_values(self.raw, self.path)
 
 
 def load_scenario(path: str | Path) -> Scenario:
     """Load and validate one scenario file; ConfigError names file, field, value and range."""
     path = Path(path)
     return build_scenario(load_yaml(path), path)
-
-
-def _whole(value: float, step: float) -> bool:
-    n = value / step
-    return abs(n - round(n)) <= 1e-9 * max(1.0, abs(n))
 
 
 def build_scenario(raw: Any, path: Path) -> Scenario:
@@ -86,13 +79,13 @@ def build_scenario(raw: Any, path: Path) -> Scenario:
     except ValueError as exc:
         raise ConfigError(f"{path}: trajectory.{exc}") from None
     rate, duration = float(se["imu_rate_hz"]), float(tr["duration_s"])
-    if not _whole(duration, 1.0 / rate):
+    if not whole_multiple(duration, 1.0 / rate):
         raise ConfigError(
             f"{path}: trajectory.duration_s = {duration!r}: must be a whole number of IMU steps "
             f"(1 / sensors.imu_rate_hz = {1.0 / rate:g} s)"
         )
     out_rate = float(raw["metrics"]["output_rate_hz"])
-    if out_rate > rate or not _whole(rate / out_rate, 1.0):
+    if out_rate > rate or not whole_multiple(rate / out_rate, 1.0):
         raise ConfigError(
             f"{path}: metrics.output_rate_hz = {out_rate!r}: must divide sensors.imu_rate_hz = "
             f"{rate:g} into a whole number of steps"

@@ -14,7 +14,8 @@ from typing import Any
 
 import numpy as np
 
-from pipeline.config import ConfigError, dotted_get, load_schema, load_yaml, sha256_of, validate
+from pipeline.config import ConfigError, load_schema, load_yaml, sha256_of, validate
+from pipeline.scenarios import decisions_with_values
 
 __all__ = ["Scenario", "load_scenario", "build_scenario", "POSITION_NEEDS", "ROOT"]
 
@@ -97,10 +98,7 @@ class Scenario:
 
     def decisions(self) -> list[dict[str, Any]]:
         """Each decision with the value found at its field (ConfigError if the field is missing)."""
-        return [
-            {**d, "value": dotted_get(self.raw, d["field"], self.path)}
-            for d in self.raw.get("decisions", [])
-        ]
+        return decisions_with_values(self.raw, self.path)
 
 
 def _sensor(raw: dict[str, Any], bias_unit: float, nominal: float) -> SensorErrors:

@@ -17,9 +17,10 @@ from typing import Any
 
 import numpy as np
 
-from pipeline.config import ConfigError, dotted_get, load_schema, load_yaml, sha256_of, validate
+from pipeline.config import ConfigError, load_schema, load_yaml, sha256_of, validate
 from pipeline.platform_drift.trajectory import Earth, Trajectory
 from pipeline.platform_drift.trajectory import Path as TrajPath
+from pipeline.scenarios import decisions_with_values, whole_multiple
 
 __all__ = [
     "Scenario",
@@ -97,21 +98,13 @@ class Scenario:
 
     def decisions(self) -> list[dict[str, Any]]:
         """Each decision with the value found at its field (ConfigError if the field is missing)."""
-        return [
-            {**d, "value": dotted_get(self.raw, d["field"], self.path)}
-            for d in self.raw.get("decisions", [])
-        ]
+        return decisions_with_values(self.raw, self.path)
 
 
 def load_scenario(path: str | Path) -> Scenario:
     """Load and validate one scenario file; ConfigError names file, field, value and range."""
     path = Path(path)
     return build_scenario(load_yaml(path), path)
-
-
-def _whole_steps(value: float, step: float) -> bool:
-    n = value / step
-    return abs(n - round(n)) <= 1e-9 * max(1.0, abs(n))
 
 
 def build_scenario(raw: Any, path: Path) -> Scenario:
@@ -145,7 +138,7 @@ def build_scenario(raw: Any, path: Path) -> Scenario:
         )
     step = raw["output_step_s"]
     for key in ("duration_s", "long_duration_s"):
-        if key in raw and not _whole_steps(raw[key], step):
+        if key in raw and not whole_multiple(raw[key], step):
             raise ConfigError(
                 f"{path}: {key} = {raw[key]!r}: must be a whole number of output_step_s = {step!r}"
             )
