@@ -1,9 +1,11 @@
 # Reproducible environment + workflow entry points.
 #
 #   make venv       create .venv from environment.lock (hash-checked, Python 3.11 only)
-#   make test       run the test suite            (PYTEST_ARGS="-k foo -x" to pass options)
+#   make test       run the test suite            (PYTEST_ARGS="-k foo -x" to pass options);
+#                   first installs the system tools the report tests drive (system-deps)
 #   make reproduce  run the Snakemake workflow    (CORES=2 by default)
-#   make lint       ruff check + ruff format --check
+#   make lint       ruff check + ruff format --check, snakefmt --check, snakemake --lint
+#   make system-deps  Debian's chromium (headless browser) and poppler-utils (pdftoppm), if missing
 #   make bench      benchmarks (altimeter_attitude filters vs filterpy), on demand
 #   make lock       regenerate environment.lock from requirements.in
 #   make clean      remove workflow outputs (results/, .snakemake/); keeps .venv
@@ -29,7 +31,15 @@ UV             := $(LOCK_TOOL_VENV)/bin/uv
 LOCK_ARGS := pip compile --generate-hashes --python-version 3.11 \
 	--python-platform x86_64-unknown-linux-gnu requirements.in -o environment.lock
 
-.PHONY: venv reproduce test lint bench lock clean check-python
+# System tools of the report tests: Debian's chromium loads reports/reproduction.html headless,
+# poppler-utils renders reports/reproduction.pdf. Installed with apt-get when missing (as root,
+# or with password-less sudo); otherwise those tests are skipped with a warning here, unless
+# REQUIRE_SYSTEM_DEPS=1 (CI), which makes a missing tool an error.
+SYSTEM_TOOLS := /usr/bin/chromium /usr/bin/pdftoppm /usr/bin/pdftotext /usr/bin/pdfinfo
+SYSTEM_PKGS  := chromium poppler-utils
+REQUIRE_SYSTEM_DEPS ?= 0
+
+.PHONY: venv reproduce test lint bench lock clean check-python system-deps
 
 venv: $(STAMP)
 
@@ -61,8 +71,28 @@ $(STAMP): environment.lock
 reproduce: $(STAMP)
 	PYTHONPATH=$(CURDIR) $(VENV)/bin/snakemake --cores $(CORES) \
 		--rerun-triggers mtime params input code software-env --printshellcmds
+	PYTHONPATH=$(CURDIR) $(VENV)/bin/snakemake --report $(CURDIR)/reports/snakemake.html
 
-test: $(STAMP)
+system-deps:
+	@missing=""; for t in $(SYSTEM_TOOLS); do [ -x "$$t" ] || missing="$$missing $$t"; done; \
+	if [ -z "$$missing" ]; then exit 0; fi; \
+	if [ "$$(id -u)" = 0 ]; then sudo=""; \
+	elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then sudo="sudo -n"; \
+	else sudo="none"; fi; \
+	if [ "$$sudo" != none ] && command -v apt-get >/dev/null 2>&1; then \
+		echo "installing $(SYSTEM_PKGS) (missing:$$missing)"; \
+		$$sudo apt-get update -q && \
+		DEBIAN_FRONTEND=noninteractive $$sudo apt-get install -y -q --no-install-recommends \
+			$(SYSTEM_PKGS) || exit 1; \
+	elif [ "$(REQUIRE_SYSTEM_DEPS)" = 1 ]; then \
+		echo "error: missing$$missing and cannot install $(SYSTEM_PKGS) (needs apt-get as root)" >&2; \
+		exit 1; \
+	else \
+		echo "warning: missing$$missing; the browser/PDF report tests will be skipped" \
+			"(install Debian's $(SYSTEM_PKGS))" >&2; \
+	fi
+
+test: $(STAMP) system-deps
 	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pytest -q $(PYTEST_ARGS)
 
 bench: $(STAMP)
@@ -71,6 +101,8 @@ bench: $(STAMP)
 lint: $(STAMP)
 	$(VENV)/bin/ruff check .
 	$(VENV)/bin/ruff format --check .
+	$(VENV)/bin/snakefmt --check Snakefile pipeline/rules/
+	PYTHONPATH=$(CURDIR) $(VENV)/bin/snakemake --lint
 
 $(UV):
 	$(PYTHON) -m venv $(LOCK_TOOL_VENV)

@@ -6,16 +6,21 @@
 #   published   --compare--> results/<slug>/verdicts.csv
 #   results     --figures--> results/<slug>/figures/
 #   notebooks   --execute--> reports/notebooks/<slug>.html
-#   everything  --report-->  reports/<slug>.html
+#   everything  --report-->  reports/<slug>.html, reports/reproduction.html|pdf
 
 
 configfile: "config/config.yaml"
+
+
+# `snakemake --report reports/snakemake.html`: outputs tagged in pipeline/rules/*.smk
+report: "reports/snakemake/workflow.rst"
 
 
 include: "pipeline/rules/common.smk"
 include: "pipeline/rules/north_finding.smk"
 include: "pipeline/rules/platform_drift.smk"
 include: "pipeline/rules/altimeter_attitude.smk"
+include: "pipeline/rules/reproduction.smk"
 
 
 rule all:
@@ -23,3 +28,4 @@ rule all:
         rules.north_finding_all.input,
         rules.platform_drift_all.input,
         rules.altimeter_attitude_all.input,
+        rules.reproduction_all.input,

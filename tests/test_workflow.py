@@ -2,10 +2,8 @@
 
 from __future__ import annotations
 
-import os
+import json
 import re
-import shutil
-import signal
 import subprocess
 import sys
 from pathlib import Path
@@ -21,35 +19,11 @@ from pipeline.columns import (
     VERDICT_KINDS,
     VERDICTS,
 )
+from tests.workflow_harness import ROOT, snakemake
 
-ROOT = Path(__file__).resolve().parents[1]
 RULES_FILE = ROOT / "pipeline" / "rules" / "north_finding.smk"
 
 pytestmark = pytest.mark.workflow
-
-
-def _snakemake(*args: str, cwd: Path, timeout: float = 900) -> subprocess.CompletedProcess:
-    """Run snakemake in its own session; on timeout kill the whole group (its jobs too)."""
-    env = {**os.environ, "PYTHONPATH": str(cwd)}
-    cmd = [sys.executable, "-m", "snakemake", *args]
-    proc = subprocess.Popen(
-        cmd,
-        cwd=cwd,
-        env=env,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-        start_new_session=True,
-    )
-    try:
-        out, err = proc.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        os.killpg(proc.pid, signal.SIGKILL)
-        out, err = proc.communicate()
-        pytest.fail(
-            f"snakemake {' '.join(args)} did not finish in {timeout} s:\n{(out + err)[-3000:]}"
-        )
-    return subprocess.CompletedProcess(cmd, proc.returncode, out, err)
 
 
 def _job_counts(output: str) -> dict[str, int]:
@@ -67,7 +41,7 @@ def _job_counts(output: str) -> dict[str, int]:
 def test_dry_run_lists_every_north_finding_rule():
     """``snakemake -n`` in the repository root parses, validates every scenario and plans every
     rule (``--forceall``: results of an earlier run would otherwise hide up-to-date rules)."""
-    r = _snakemake("-n", "--cores", "1", "--forceall", "--nolock", cwd=ROOT, timeout=300)
+    r = snakemake("-n", "--cores", "1", "--forceall", "--nolock", cwd=ROOT, timeout=300)
     assert r.returncode == 0, r.stderr[-3000:]
     counts = _job_counts(r.stdout + r.stderr)
     rules = set(re.findall(r"^rule (\w+):", RULES_FILE.read_text(encoding="utf-8"), flags=re.M))
@@ -77,77 +51,6 @@ def test_dry_run_lists_every_north_finding_rule():
     assert rules - {"north_finding_all"} <= planned, rules - planned
     n_scenarios = len(list((ROOT / "config" / "scenarios" / "north_finding").glob("*.yaml")))
     assert counts["north_finding_simulate"] == n_scenarios
-
-
-# --------------------------------------------------------------------------------------------
-# a real run in a reduced copy of the repository
-# --------------------------------------------------------------------------------------------
-def _copy_repo(dest: Path) -> None:
-    files = subprocess.run(
-        ["git", "ls-files", "-co", "--exclude-standard", "-z"],
-        cwd=ROOT,
-        capture_output=True,
-        text=True,
-        check=True,
-    ).stdout.split("\0")
-    for name in filter(None, files):
-        src = ROOT / name
-        if not src.is_file():  # deleted in the working tree
-            continue
-        target = dest / name
-        target.parent.mkdir(parents=True, exist_ok=True)
-        shutil.copy2(src, target)
-
-
-def _reduce_paper(path: Path) -> None:
-    """Fewer trials, keeping the file's comments (the report shows the scenario and decisions)."""
-    text = path.read_text(encoding="utf-8")
-    new, n1 = re.subn(r"(?m)^(monte_carlo:\n  n_trials:) \d+", r"\1 40", text)
-    new, n2 = re.subn(
-        r"(?m)^(sensitivity:\n  n_avg:) \[[^\]]*\]\n  n_trials: \d+",
-        r"\1 [10000, 1000000]\n  n_trials: 10",
-        new,
-    )
-    assert n1 == 1 and n2 == 1, "paper.yaml layout changed: update _reduce_paper"
-    path.write_text(new, encoding="utf-8")
-    raw = yaml.safe_load(new)
-    assert raw["monte_carlo"]["n_trials"] == 40 and raw["sensitivity"] == {
-        "n_avg": [10000, 1000000],
-        "n_trials": 10,
-    }
-
-
-def _reduce_altimeter(repo: Path) -> None:
-    """altimeter_attitude: the paper scenario only, 10 runs; a two-point sweep of 3 runs."""
-    scenarios = repo / "config" / "scenarios" / "altimeter_attitude"
-    for f in scenarios.glob("*.yaml"):
-        if f.name != "paper.yaml":
-            f.unlink()
-    paper = scenarios / "paper.yaml"
-    text, n = re.subn(r"(?m)^(  n_runs:) \d+", r"\1 10", paper.read_text(encoding="utf-8"))
-    assert n == 1, "altimeter_attitude paper.yaml layout changed: update _reduce_altimeter"
-    paper.write_text(text, encoding="utf-8")
-    config = repo / "config" / "config.yaml"
-    raw = yaml.safe_load(config.read_text(encoding="utf-8"))
-    raw["altimeter_attitude"]["sweep"]["n_runs"] = 3
-    raw["altimeter_attitude"]["sweep"]["values"] = {"intensity": [0.5, 1.0]}
-    config.write_text(yaml.safe_dump(raw, sort_keys=False), encoding="utf-8")
-
-
-@pytest.fixture(scope="module")
-def workflow_run(tmp_path_factory):
-    repo = tmp_path_factory.mktemp("repo")
-    _copy_repo(repo)
-    scenarios = repo / "config" / "scenarios" / "north_finding"
-    for f in scenarios.glob("*.yaml"):
-        if f.name not in ("paper.yaml", "example_readings.yaml"):
-            f.unlink()
-    _reduce_paper(scenarios / "paper.yaml")
-    _reduce_altimeter(repo)
-    assert not (repo / "results").exists()
-    r = _snakemake("--cores", "2", "--quiet", cwd=repo, timeout=600)
-    assert r.returncode == 0, (r.stdout + r.stderr)[-5000:]
-    return repo
 
 
 @pytest.mark.slow
@@ -218,7 +121,7 @@ def test_bad_scenario_stops_the_workflow_before_any_job(workflow_run):
     bad.write_text(yaml.safe_dump(raw), encoding="utf-8")
     before = {p: p.stat().st_mtime_ns for p in (repo / "results").rglob("*") if p.is_file()}
     try:
-        r = _snakemake("--cores", "1", "--forceall", cwd=repo, timeout=300)
+        r = snakemake("--cores", "1", "--forceall", cwd=repo, timeout=300)
     finally:
         bad.unlink()
     assert r.returncode != 0
@@ -255,3 +158,94 @@ def test_altimeter_attitude_outputs(workflow_run):
     assert list(audit.columns) == AUDIT_COLUMNS and "13a" in set(audit["equation"])
     page = (workflow_run / "reports" / "altimeter_attitude.html").read_text(encoding="utf-8")
     assert "rms_summary" in page or "Fig. 7" in page
+
+
+# --------------------------------------------------------------------------------------------
+# Snakemake ecosystem: lint, snakefmt, --report, the conda environment of the rules
+# --------------------------------------------------------------------------------------------
+def test_snakemake_lint_is_clean():
+    r = snakemake("--lint", cwd=ROOT, timeout=300)
+    out = r.stdout + r.stderr
+    assert r.returncode == 0, out[-3000:]
+    assert "Lints for" not in out and "good condition" in out, out[-3000:]
+
+
+def test_snakefiles_are_snakefmt_formatted():
+    files = ["Snakefile", *sorted(str(p) for p in (ROOT / "pipeline" / "rules").glob("*.smk"))]
+    r = subprocess.run(
+        [sys.executable, "-m", "snakefmt", "--check", "--diff", *files],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert r.returncode == 0, (r.stdout + r.stderr)[-3000:]
+
+
+def _report_categories(html: str, names) -> dict[str, dict[str, list[str]]]:
+    """The category -> subcategory -> files tables embedded in a Snakemake report."""
+    decoder = json.JSONDecoder()
+    found = {}
+    for name in names:
+        m = re.search(rf'"{name}": (\{{"[^"]+": \[)', html)
+        assert m, f"category {name} not in the report"
+        found[name], _ = decoder.raw_decode(html, m.start(1))
+    return found
+
+
+@pytest.mark.slow
+def test_snakemake_report_has_a_category_per_paper(workflow_run, tmp_path):
+    """``snakemake --report`` builds; every paper is a category holding its figures (labelled
+    with the paper's figure numbers), audit, verdicts and pages; the combined reports too."""
+    out = tmp_path / "snakemake.html"
+    r = snakemake("--report", str(out), cwd=workflow_run, timeout=600)
+    assert r.returncode == 0, (r.stdout + r.stderr)[-3000:]
+    html = out.read_text(encoding="utf-8")
+    papers = yaml.safe_load((workflow_run / "config" / "config.yaml").read_text())["papers"]
+    cats = _report_categories(html, [*papers, "reproduction"])
+    for slug in papers:
+        sub = cats[slug]
+        assert sub["Equation audit"] == [f"results/{slug}/equation_audit.csv"], sub
+        assert sub["Verdicts"] == [f"results/{slug}/verdicts.csv"], sub
+        assert f"reports/{slug}.html" in sub["Pages"], sub
+        figures = sorted(Path(f).name for f in sub["Figures"])
+        on_disk = sorted(
+            p.name for p in (workflow_run / "results" / slug / "figures").glob("*.png")
+        )
+        assert figures == on_disk
+    assert sorted(cats["reproduction"]["Reports"]) == [
+        "reports/reproduction.html",
+        "reports/reproduction.pdf",
+    ]
+    # the figure labels come from the file names and each rule's paper figure numbers
+    labels = dict(re.findall(r'"filename": "([^"]+\.png)", "labels": \{"figure": "([^"]+)"', html))
+    assert labels["fig7_lkf_rms_error.png"] == "Fig. 7"
+    assert labels["fig5_stationary.png"] == "Fig. 5"
+    assert labels["fig1_roll.png"] == "Fig. 1"
+    assert labels["fig6_sensitivity.png"] == "not in the paper"
+    assert labels["fig9_latitude.png"] == "not in the paper"
+    assert labels["fig_sweep.png"] == "not in the paper"
+    # the captions are rendered (Jinja: the paper's slug from the rule name)
+    assert 'Figure of <tt class=\\"docutils literal\\">platform_drift</tt>' in html
+
+
+def _lock_versions() -> dict[str, str]:
+    text = (ROOT / "environment.lock").read_text(encoding="utf-8")
+    return {m[0].lower(): m[1] for m in re.findall(r"(?m)^([A-Za-z0-9_.-]+)==(\S+)", text)}
+
+
+def test_conda_env_pins_match_the_lock():
+    """The rules' conda environment (``snakemake --sdm conda``) pins the lock's versions of every
+    runtime top-level requirement; the workflow's rules all name it."""
+    env = yaml.safe_load((ROOT / "pipeline" / "envs" / "inertial-repro.yaml").read_text())
+    pip = next(d["pip"] for d in env["dependencies"] if isinstance(d, dict))
+    pins = dict(p.lower().split("==") for p in pip)
+    lock = _lock_versions()
+    assert {k: lock.get(k) for k in pins} == pins
+    assert "python=3.11" in env["dependencies"]
+    runtime = {"numpy", "scipy", "sympy", "pandas", "matplotlib", "jupyter", "nbconvert",
+               "nbclient", "ipykernel", "typst", "snakemake", "pyyaml", "jsonschema"}  # fmt: skip
+    assert runtime <= set(pins)
+    for smk in (ROOT / "pipeline" / "rules").glob("*.smk"):
+        text = smk.read_text(encoding="utf-8")
+        assert text.count("    script:") == text.count("    conda:\n        ENV\n"), smk.name

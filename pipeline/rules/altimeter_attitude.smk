@@ -12,6 +12,7 @@ AA = f"{RESULTS}/altimeter_attitude"
 AA_SCENARIOS = aa_scenarios("config/scenarios/altimeter_attitude")
 # every scenario file is validated when the workflow is parsed, before any job runs
 aa_validate_scenarios(AA_SCENARIOS)
+AA_PAPER_FIGURES = range(2, 13)  # Figs. 2-12 of the paper; the filter comparison and sweep are ours
 AA_PUBLISHED_SCENARIO = config["altimeter_attitude"]["published_scenario"]
 AA_DERIVATIONS = sorted(
     str(p) for p in Path("derivations/altimeter_attitude").glob("*.py") if p.name != "__init__.py"
@@ -31,12 +32,14 @@ rule altimeter_attitude_codegen_check:
         generated="pipeline/generated/altimeter_attitude.py",
     output:
         f"{AA}/codegen_check.txt",
-    params:
-        generator="derivations.altimeter_attitude.generate",
     log:
         f"{AA}/logs/codegen_check.log",
     benchmark:
         f"{AA}/benchmarks/codegen_check.tsv"
+    conda:
+        ENV
+    params:
+        generator="derivations.altimeter_attitude.generate",
     script:
         "../scripts/codegen_check.py"
 
@@ -46,14 +49,16 @@ rule altimeter_attitude_audit:
         AA_DERIVATIONS,
         "derivations/checks.py",
     output:
-        csv=f"{AA}/equation_audit.csv",
+        csv=tagged(f"{AA}/equation_audit.csv", "altimeter_attitude", "Equation audit", "audit"),
         math=f"{AA}/equation_math.json",
-    params:
-        audit="derivations.altimeter_attitude.audit",
     log:
         f"{AA}/logs/audit.log",
     benchmark:
         f"{AA}/benchmarks/audit.tsv"
+    conda:
+        ENV
+    params:
+        audit="derivations.altimeter_attitude.audit",
     script:
         "../scripts/equation_audit.py"
 
@@ -66,12 +71,21 @@ rule altimeter_attitude_simulate:
         scenario="config/scenarios/altimeter_attitude/{scenario}.yaml",
         schema=f"{SCHEMAS}/altimeter_attitude_scenario.schema.json",
     output:
-        **{f: f"{AA}/{{scenario}}/{f}.csv" for f in AA_FILES},
+        **{f: f"{AA}/{{scenario}}/{f}.csv" for f in AA_FILES if f != "rms_summary"},
+        rms_summary=tagged(
+            f"{AA}/{{scenario}}/rms_summary.csv",
+            "altimeter_attitude",
+            "Scenario summaries",
+            "scenario_summary",
+            scenario="{scenario}",
+        ),
         provenance=f"{AA}/{{scenario}}/provenance.json",
     log:
         f"{AA}/logs/simulate_{{scenario}}.log",
     benchmark:
         f"{AA}/benchmarks/simulate_{{scenario}}.tsv"
+    conda:
+        ENV
     script:
         "../scripts/aa_simulate.py"
 
@@ -83,13 +97,15 @@ rule altimeter_attitude_sweep:
         codegen=f"{AA}/codegen_check.txt",
         scenario=config["altimeter_attitude"]["sweep"]["base_scenario"],
     output:
-        f"{AA}/sweep.csv",
-    params:
-        sweep=config["altimeter_attitude"]["sweep"],
+        tagged(f"{AA}/sweep.csv", "altimeter_attitude", "Sweep", "sweep"),
     log:
         f"{AA}/logs/sweep.log",
     benchmark:
         f"{AA}/benchmarks/sweep.tsv"
+    conda:
+        ENV
+    params:
+        sweep=config["altimeter_attitude"]["sweep"],
     script:
         "../scripts/aa_sweep.py"
 
@@ -100,15 +116,15 @@ rule altimeter_attitude_verdicts:
         published="config/published/altimeter_attitude.yaml",
         schema=f"{SCHEMAS}/published_altimeter_attitude.schema.json",
         scenario=f"config/scenarios/altimeter_attitude/{AA_PUBLISHED_SCENARIO}.yaml",
-        results=expand(
-            f"{AA}/{AA_PUBLISHED_SCENARIO}/{{f}}.csv", f=AA_FILES
-        ),
+        results=expand(f"{AA}/{AA_PUBLISHED_SCENARIO}/{{f}}.csv", f=AA_FILES),
     output:
-        f"{AA}/verdicts.csv",
+        tagged(f"{AA}/verdicts.csv", "altimeter_attitude", "Verdicts", "verdicts"),
     log:
         f"{AA}/logs/verdicts.log",
     benchmark:
         f"{AA}/benchmarks/verdicts.tsv"
+    conda:
+        ENV
     script:
         "../scripts/aa_verdicts.py"
 
@@ -121,11 +137,16 @@ rule altimeter_attitude_figures:
         summary=f"{AA}/{AA_PUBLISHED_SCENARIO}/rms_summary.csv",
         published="config/published/altimeter_attitude.yaml",
     output:
-        [f"{AA}/figures/{f}" for f in AA_FIGURES],
+        [
+            tagged_figure(f"{AA}/figures/{f}", "altimeter_attitude", AA_PAPER_FIGURES)
+            for f in AA_FIGURES
+        ],
     log:
         f"{AA}/logs/figures.log",
     benchmark:
         f"{AA}/benchmarks/figures.tsv"
+    conda:
+        ENV
     script:
         "../scripts/aa_figures.py"
 
@@ -136,11 +157,13 @@ rule altimeter_attitude_sweep_figure:
         sweep=f"{AA}/sweep.csv",
         published="config/published/altimeter_attitude.yaml",
     output:
-        f"{AA}/figures/{AA_SWEEP_FIGURE}",
+        tagged_figure(f"{AA}/figures/{AA_SWEEP_FIGURE}", "altimeter_attitude", AA_PAPER_FIGURES),
     log:
         f"{AA}/logs/sweep_figure.log",
     benchmark:
         f"{AA}/benchmarks/sweep_figure.tsv"
+    conda:
+        ENV
     script:
         "../scripts/aa_sweep_figure.py"
 
@@ -156,11 +179,13 @@ rule altimeter_attitude_report:
         sweep=f"{AA}/sweep.csv",
         figures=[f"{AA}/figures/{f}" for f in AA_FIGURES + [AA_SWEEP_FIGURE]],
     output:
-        f"{REPORTS}/altimeter_attitude.html",
+        tagged(f"{REPORTS}/altimeter_attitude.html", "altimeter_attitude", "Pages", "page"),
     log:
         f"{AA}/logs/report.log",
     benchmark:
         f"{AA}/benchmarks/report.tsv"
+    conda:
+        ENV
     script:
         "../scripts/aa_report.py"
 
@@ -170,10 +195,17 @@ rule altimeter_attitude_notebook:
         AA_DERIVATIONS,
         notebook="notebooks/altimeter_attitude.ipynb",
     output:
-        f"{REPORTS}/notebooks/altimeter_attitude.html",
+        tagged(
+            f"{REPORTS}/notebooks/altimeter_attitude.html",
+            "altimeter_attitude",
+            "Pages",
+            "notebook",
+        ),
     log:
         f"{AA}/logs/notebook.log",
     benchmark:
         f"{AA}/benchmarks/notebook.tsv"
+    conda:
+        ENV
     script:
         "../scripts/execute_notebook.py"

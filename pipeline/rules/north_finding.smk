@@ -14,8 +14,19 @@ NF_SCENARIOS = scenarios("config/scenarios/north_finding")
 # every scenario file is validated when the workflow is parsed, before any job runs
 validate_scenarios(NF_SCENARIOS)
 NF_PUBLISHED_SCENARIO = config["north_finding"]["published_scenario"]
-NF_FILES = ["estimates.csv", "mc_trials.csv", "mc_summary.csv", "error_budget.csv", "sensitivity.csv", "provenance.json"]
-NF_FIGURES = [f"fig{i}_{n}.png" for i, n in enumerate(["roll", "pitch", "azimuth", "bias", "scale", "sensitivity"], 1)]
+NF_FILES = [
+    "estimates.csv",
+    "mc_trials.csv",
+    "mc_summary.csv",
+    "error_budget.csv",
+    "sensitivity.csv",
+    "provenance.json",
+]
+NF_PAPER_FIGURES = range(1, 6)  # Figs. 1-5 of the paper; fig6 is ours
+NF_FIGURES = [
+    f"fig{i}_{n}.png"
+    for i, n in enumerate(["roll", "pitch", "azimuth", "bias", "scale", "sensitivity"], 1)
+]
 
 
 rule north_finding_all:
@@ -30,12 +41,14 @@ rule north_finding_codegen_check:
         generated="pipeline/generated/north_finding.py",
     output:
         f"{NF}/codegen_check.txt",
-    params:
-        generator="derivations.north_finding.generate",
     log:
         f"{NF}/logs/codegen_check.log",
     benchmark:
         f"{NF}/benchmarks/codegen_check.tsv"
+    conda:
+        ENV
+    params:
+        generator="derivations.north_finding.generate",
     script:
         "../scripts/codegen_check.py"
 
@@ -47,14 +60,16 @@ rule north_finding_audit:
         "derivations/north_finding/printed.py",
         "derivations/north_finding/audit.py",
     output:
-        csv=f"{NF}/equation_audit.csv",
+        csv=tagged(f"{NF}/equation_audit.csv", "north_finding", "Equation audit", "audit"),
         math=f"{NF}/equation_math.json",
-    params:
-        audit="derivations.north_finding.audit",
     log:
         f"{NF}/logs/audit.log",
     benchmark:
         f"{NF}/benchmarks/audit.tsv"
+    conda:
+        ENV
+    params:
+        audit="derivations.north_finding.audit",
     script:
         "../scripts/equation_audit.py"
 
@@ -72,6 +87,8 @@ rule north_finding_simulate:
         f"{NF}/logs/simulate_{{scenario}}.log",
     benchmark:
         f"{NF}/benchmarks/simulate_{{scenario}}.tsv"
+    conda:
+        ENV
     script:
         "../scripts/nf_simulate.py"
 
@@ -85,11 +102,13 @@ rule north_finding_verdicts:
         mc_trials=f"{NF}/{NF_PUBLISHED_SCENARIO}/mc_trials.csv",
         error_budget=f"{NF}/{NF_PUBLISHED_SCENARIO}/error_budget.csv",
     output:
-        f"{NF}/verdicts.csv",
+        tagged(f"{NF}/verdicts.csv", "north_finding", "Verdicts", "verdicts"),
     log:
         f"{NF}/logs/verdicts.log",
     benchmark:
         f"{NF}/benchmarks/verdicts.tsv"
+    conda:
+        ENV
     script:
         "../scripts/nf_verdicts.py"
 
@@ -103,11 +122,13 @@ rule north_finding_figures:
         sensitivity=f"{NF}/{NF_PUBLISHED_SCENARIO}/sensitivity.csv",
         provenance=f"{NF}/{NF_PUBLISHED_SCENARIO}/provenance.json",
     output:
-        [f"{NF}/figures/{f}" for f in NF_FIGURES],
+        [tagged_figure(f"{NF}/figures/{f}", "north_finding", NF_PAPER_FIGURES) for f in NF_FIGURES],
     log:
         f"{NF}/logs/figures.log",
     benchmark:
         f"{NF}/benchmarks/figures.tsv"
+    conda:
+        ENV
     script:
         "../scripts/nf_figures.py"
 
@@ -117,11 +138,13 @@ rule north_finding_notebook:
         DERIVATION_CODE,
         notebook="notebooks/north_finding.ipynb",
     output:
-        f"{REPORTS}/notebooks/north_finding.html",
+        tagged(f"{REPORTS}/notebooks/north_finding.html", "north_finding", "Pages", "notebook"),
     log:
         f"{NF}/logs/notebook.log",
     benchmark:
         f"{NF}/benchmarks/notebook.tsv"
+    conda:
+        ENV
     script:
         "../scripts/execute_notebook.py"
 
@@ -134,13 +157,17 @@ rule north_finding_report:
         verdicts=f"{NF}/verdicts.csv",
         published="config/published/north_finding.yaml",
         scenarios=expand(f"{NF}/{{scenario}}/estimates.csv", scenario=NF_SCENARIOS),
-        scenario_files=expand("config/scenarios/north_finding/{scenario}.yaml", scenario=NF_SCENARIOS),
+        scenario_files=expand(
+            "config/scenarios/north_finding/{scenario}.yaml", scenario=NF_SCENARIOS
+        ),
         figures=[f"{NF}/figures/{f}" for f in NF_FIGURES],
     output:
-        f"{REPORTS}/north_finding.html",
+        tagged(f"{REPORTS}/north_finding.html", "north_finding", "Pages", "page"),
     log:
         f"{NF}/logs/report.log",
     benchmark:
         f"{NF}/benchmarks/report.tsv"
+    conda:
+        ENV
     script:
         "../scripts/nf_report.py"

@@ -12,7 +12,14 @@ pd_validate_scenarios(PD_SCENARIOS)
 PD_DERIVATIONS = sorted(
     str(p) for p in Path("derivations/platform_drift").glob("*.py") if p.name != "__init__.py"
 )
-PD_FILES = ["errors", "errors_diagnostic", "errors_long", "errors_long_diagnostic", "summary"]
+PD_FILES = [
+    "errors",
+    "errors_diagnostic",
+    "errors_long",
+    "errors_long_diagnostic",
+    "summary",
+]
+PD_PAPER_FIGURES = range(5, 9)  # Figs. 5-8 of the paper; fig9 (latitude sweep) is ours
 PD_FIGURES = [
     "fig5_stationary.png",
     "fig6_latitude_change.png",
@@ -34,12 +41,14 @@ rule platform_drift_codegen_check:
         generated="pipeline/generated/platform_drift.py",
     output:
         f"{PD}/codegen_check.txt",
-    params:
-        generator="derivations.platform_drift.generate",
     log:
         f"{PD}/logs/codegen_check.log",
     benchmark:
         f"{PD}/benchmarks/codegen_check.tsv"
+    conda:
+        ENV
+    params:
+        generator="derivations.platform_drift.generate",
     script:
         "../scripts/codegen_check.py"
 
@@ -49,14 +58,16 @@ rule platform_drift_audit:
         PD_DERIVATIONS,
         "derivations/checks.py",
     output:
-        csv=f"{PD}/equation_audit.csv",
+        csv=tagged(f"{PD}/equation_audit.csv", "platform_drift", "Equation audit", "audit"),
         math=f"{PD}/equation_math.json",
-    params:
-        audit="derivations.platform_drift.audit",
     log:
         f"{PD}/logs/audit.log",
     benchmark:
         f"{PD}/benchmarks/audit.tsv"
+    conda:
+        ENV
+    params:
+        audit="derivations.platform_drift.audit",
     script:
         "../scripts/equation_audit.py"
 
@@ -69,12 +80,21 @@ rule platform_drift_simulate:
         scenario="config/scenarios/platform_drift/{scenario}.yaml",
         schema=f"{SCHEMAS}/platform_drift_scenario.schema.json",
     output:
-        **{f: f"{PD}/{{scenario}}/{f}.csv" for f in PD_FILES},
+        **{f: f"{PD}/{{scenario}}/{f}.csv" for f in PD_FILES if f != "summary"},
+        summary=tagged(
+            f"{PD}/{{scenario}}/summary.csv",
+            "platform_drift",
+            "Scenario summaries",
+            "scenario_summary",
+            scenario="{scenario}",
+        ),
         provenance=f"{PD}/{{scenario}}/provenance.json",
     log:
         f"{PD}/logs/simulate_{{scenario}}.log",
     benchmark:
         f"{PD}/benchmarks/simulate_{{scenario}}.tsv"
+    conda:
+        ENV
     script:
         "../scripts/pd_simulate.py"
 
@@ -87,11 +107,13 @@ rule platform_drift_verdicts:
         errors=expand(f"{PD}/{{scenario}}/errors.csv", scenario=PD_SCENARIOS),
         errors_long=expand(f"{PD}/{{scenario}}/errors_long.csv", scenario=PD_SCENARIOS),
     output:
-        f"{PD}/verdicts.csv",
+        tagged(f"{PD}/verdicts.csv", "platform_drift", "Verdicts", "verdicts"),
     log:
         f"{PD}/logs/verdicts.log",
     benchmark:
         f"{PD}/benchmarks/verdicts.tsv"
+    conda:
+        ENV
     script:
         "../scripts/pd_verdicts.py"
 
@@ -102,11 +124,13 @@ rule platform_drift_figures:
         errors=expand(f"{PD}/{{scenario}}/errors.csv", scenario=PD_SCENARIOS),
         diagnostic=expand(f"{PD}/{{scenario}}/errors_diagnostic.csv", scenario=PD_SCENARIOS),
     output:
-        [f"{PD}/figures/{f}" for f in PD_FIGURES],
+        [tagged_figure(f"{PD}/figures/{f}", "platform_drift", PD_PAPER_FIGURES) for f in PD_FIGURES],
     log:
         f"{PD}/logs/figures.log",
     benchmark:
         f"{PD}/benchmarks/figures.tsv"
+    conda:
+        ENV
     script:
         "../scripts/pd_figures.py"
 
@@ -121,11 +145,13 @@ rule platform_drift_report:
         figures=[f"{PD}/figures/{f}" for f in PD_FIGURES],
         sweep=f"{PD}/figures/fig9_latitude.png",
     output:
-        f"{REPORTS}/platform_drift.html",
+        tagged(f"{REPORTS}/platform_drift.html", "platform_drift", "Pages", "page"),
     log:
         f"{PD}/logs/report.log",
     benchmark:
         f"{PD}/benchmarks/report.tsv"
+    conda:
+        ENV
     script:
         "../scripts/pd_report.py"
 
@@ -138,11 +164,13 @@ rule platform_drift_latitude_sweep:
         codegen=f"{PD}/codegen_check.txt",
     output:
         csv=f"{PD}/latitude_sweep.csv",
-        png=f"{PD}/figures/fig9_latitude.png",
+        png=tagged_figure(f"{PD}/figures/fig9_latitude.png", "platform_drift", PD_PAPER_FIGURES),
     log:
         f"{PD}/logs/latitude_sweep.log",
     benchmark:
         f"{PD}/benchmarks/latitude_sweep.tsv"
+    conda:
+        ENV
     script:
         "../scripts/pd_sweep.py"
 
@@ -153,10 +181,12 @@ rule platform_drift_notebook:
         f"{PD}/stationary/errors.csv",
         notebook="notebooks/platform_drift.ipynb",
     output:
-        f"{REPORTS}/notebooks/platform_drift.html",
+        tagged(f"{REPORTS}/notebooks/platform_drift.html", "platform_drift", "Pages", "notebook"),
     log:
         f"{PD}/logs/notebook.log",
     benchmark:
         f"{PD}/benchmarks/notebook.tsv"
+    conda:
+        ENV
     script:
         "../scripts/execute_notebook.py"

@@ -1,0 +1,401 @@
+"""HTML renderer of the combined reproduction report (``reports/reproduction.html``).
+
+Renders a :class:`pipeline.report.document.Document` as ONE self-contained file: inline
+CSS, figures as base64 ``data:`` URIs, mathematics as inline MathML (rendered natively by
+the browser), no JavaScript and nothing fetched from a network. The output is
+deterministic: the same document gives the same bytes.
+
+Layout: title, the scoreboard (one row per paper plus its ReScience-style line, linking to
+the paper's section), a numbered table of contents, then the numbered sections (the PDF
+uses the same numbers).
+"""
+
+from __future__ import annotations
+
+import html.entities
+import os
+import re
+from collections.abc import Sequence
+from pathlib import Path
+
+from pipeline.atomic import write_text
+from pipeline.report import html as H
+from pipeline.report.document import (
+    Block,
+    Document,
+    EquationRow,
+    EquationTable,
+    Figure,
+    Link,
+    Paragraph,
+    ScoreRow,
+    Section,
+    Table,
+)
+
+__all__ = ["CSS", "render_html", "section_numbers", "write_html"]
+
+#: Words that get a verdict colour wherever a table cell holds exactly that word.
+_VERDICT_WORDS = {
+    "match",
+    "differs",
+    "not_checkable",
+    "reproduced",
+    "consistent",
+    "not_reproduced",
+    "upheld",
+    "not_upheld",
+    "missing",
+}
+
+CSS = (
+    H.DEFAULT_CSS
+    + """
+body { max-width: 1400px; }
+header.title h1 { font-size: 2em; margin-bottom: 0.1em; }
+header.title p.subtitle { font-size: 1.1em; color: #333; margin-top: 0; }
+header.title p.generated { color: #666; font-size: 0.9em; }
+h2 a, h3 a, h4 a, h5 a { color: inherit; text-decoration: none; }
+span.secno { color: #666; margin-right: 0.4em; font-variant-numeric: tabular-nums; }
+table.scoreboard { border-collapse: collapse; width: 100%; margin: 0.6em 0 1.4em 0;
+                   font-size: 0.95em; }
+table.scoreboard caption { text-align: left; font-weight: bold; font-size: 1.15em;
+                           padding: 0.3em 0; }
+table.scoreboard th, table.scoreboard td { border: 1px solid #bbb; padding: 0.3em 0.5em; }
+table.scoreboard thead th { background: #eef0f3; text-align: center; }
+table.scoreboard thead tr.groups th { font-size: 1.0em; }
+table.scoreboard thead tr.words th { font-weight: normal; font-size: 0.85em; }
+table.scoreboard th.paper { text-align: left; vertical-align: bottom; }
+table.scoreboard td.paper { font-weight: bold; }
+table.scoreboard td.paper a { color: #0b3d91; }
+table.scoreboard td.paper span.slug { display: block; font-weight: normal; color: #666;
+                                      font-size: 0.85em; font-family: monospace; }
+table.scoreboard td.n { text-align: center; font-size: 1.25em; font-weight: bold;
+                        font-variant-numeric: tabular-nums; width: 4.2em; }
+table.scoreboard td.n.zero { color: #aaa; font-weight: normal; }
+table.scoreboard td.good { background: #eaf6ea; color: #1d6b1d; }
+table.scoreboard td.bad { background: #fbe3e1; color: #a3261a; }
+table.scoreboard td.neutral { background: #f3f3f3; color: #444; }
+table.scoreboard td.n.zero { background: #fff; }
+table.scoreboard .first { border-left: 2px solid #666; }
+table.scoreboard tr.line td { font-size: 0.9em; color: #222; background: #fafafa;
+                              border-bottom: 2px solid #666; }
+table.scoreboard tr.line td strong.full { color: #1d6b1d; }
+table.scoreboard tr.line td strong.partial { color: #8a5a00; }
+table.scoreboard tr.line td strong.none { color: #a3261a; }
+table.scoreboard ul.reasons { margin: 0.15em 0 0.1em 0; padding-left: 1.3em; }
+table.scoreboard ul.reasons li { margin: 0.05em 0; }
+p.legend { font-size: 0.85em; color: #444; }
+nav.toc { background: #f7f8fa; border: 1px solid #ddd; padding: 0.4em 1em; margin: 1em 0; }
+nav.toc h2 { border: none; margin: 0.3em 0; font-size: 1.2em; }
+nav.toc ul { columns: 1; list-style: none; padding-left: 0; margin: 0.2em 0; }
+nav.toc ul ul { padding-left: 1.6em; font-size: 0.95em; }
+nav.toc > ul > li { margin-top: 0.35em; }
+table.data tr.bad td { background: #fbe3e1; }
+div.scroll { overflow-x: auto; max-width: 100%; }
+table.equations td { vertical-align: top; }
+table.equations td.eq { font-weight: bold; white-space: nowrap; }
+table.equations td.math { min-width: 6em; }
+table.equations div.m { max-width: 23em; max-height: 16em; overflow: auto; padding: 0.15em 0; }
+table.equations td.note { min-width: 14em; max-width: 22em; }
+table.equations td.note div.m { max-width: 22em; }
+table.equations p.note { margin: 0.2em 0; font-size: 0.9em; color: #333; }
+table.equations tr.v-match td { background: #fff; }
+table.equations tr.v-differs td { background: #fdf0ee; }
+table.equations tr.v-not_checkable td { background: #f7f7f7; }
+math { font-size: 1.05em; font-family: "STIX Two Math", "Cambria Math", "Latin Modern Math",
+                                       "DejaVu Math TeX Gyre", math; }
+code.res { font-size: 0.8em; color: #555; display: block; max-width: 30em;
+           overflow-wrap: anywhere; }
+figure img { max-width: min(100%, 960px); }
+figure figcaption strong { margin-right: 0.3em; }
+p.link a { font-weight: bold; }
+"""
+)
+
+
+# --------------------------------------------------------------------------- numbering
+
+
+def section_numbers(sections: Sequence[Section]) -> dict[str, str]:
+    """Section id -> its number ("1", "2.3", "2.3.1"), in document order (as in the PDF)."""
+    out: dict[str, str] = {}
+
+    def walk(items: Sequence[Section], prefix: str) -> None:
+        for i, s in enumerate(items, 1):
+            num = f"{prefix}{i}"
+            out[s.id] = num
+            walk(s.subsections, f"{num}.")
+
+    walk(sections, "")
+    return out
+
+
+# --------------------------------------------------------------------------- blocks
+
+
+def _cell(text: str) -> str:
+    word = text.strip()
+    if word in _VERDICT_WORDS:
+        return f'<span class="{H.css_class(word)}">{H.escape(text)}</span>'
+    return H.escape(text)
+
+
+_NUM_ATTR = ' class="num"'
+_NUMERIC = re.compile(r"^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?$")
+
+
+def _table(t: Table) -> str:
+    hl = set(t.highlight)
+    parts = ['<div class="scroll"><table class="data">\n']
+    if t.caption:
+        parts.append(f"<caption>{H.escape(t.caption)}</caption>\n")
+    if any(t.columns):
+        parts.append(
+            "<thead><tr>"
+            + "".join(f"<th>{H.escape(c)}</th>" for c in t.columns)
+            + "</tr></thead>\n"
+        )
+    parts.append("<tbody>\n")
+    for i, row in enumerate(t.rows):
+        cls = ' class="bad"' if i in hl else ""
+        cells = "".join(
+            f"<td{_NUM_ATTR if _NUMERIC.match(c.strip()) else ''}>{_cell(c)}</td>" for c in row
+        )
+        parts.append(f"<tr{cls}>{cells}</tr>\n")
+    parts.append("</tbody>\n</table></div>\n")
+    return "".join(parts)
+
+
+_NAMED_ENTITY = re.compile(r"&([A-Za-z][A-Za-z0-9]*);")
+_XML_ENTITIES = {"amp", "lt", "gt", "quot", "apos"}
+
+
+def _numeric_entities(markup: str) -> str:
+    """Named character references (``&InvisibleTimes;``) as numeric ones, so every MathML
+    fragment is also well-formed XML; unknown names are left as they are."""
+
+    def repl(m: re.Match[str]) -> str:
+        name = m.group(1)
+        if name in _XML_ENTITIES:
+            return m.group(0)
+        text = html.entities.html5.get(f"{name};")
+        return "".join(f"&#{ord(c)};" for c in text) if text else m.group(0)
+
+    return _NAMED_ENTITY.sub(repl, markup)
+
+
+def _math(mathml: str | None) -> str:
+    """A MathML element in a scroll box (a long expression scrolls instead of widening the
+    table); nothing if absent."""
+    if mathml and mathml.lstrip().startswith("<math"):
+        return f'<div class="m">{_numeric_entities(mathml)}</div>'
+    return ""
+
+
+def _equation_row(r: EquationRow) -> str:
+    residual = ""
+    if r.status != "match":
+        if r.residual_mathml:
+            residual = _math(r.residual_mathml)
+        elif r.residual_text:
+            residual = f'<code class="res">{H.escape(r.residual_text)}</code>'
+    elif r.residual_text and r.residual_text != "0":
+        residual = f'<code class="res">{H.escape(r.residual_text)}</code>'
+    note = f'<p class="note">{H.escape(r.note)}</p>' if r.note else ""
+    return (
+        f'<tr class="{H.css_class(r.status)}">'
+        f'<td class="eq">({H.escape(r.equation)})</td>'
+        f'<td><span class="{H.css_class(r.status)}">{H.escape(_words(r.status))}</span></td>'
+        f'<td class="math">{_math(r.printed_mathml)}</td>'
+        f'<td class="math">{_math(r.derived_mathml)}</td>'
+        f'<td class="note">{residual}{note}</td></tr>\n'
+    )
+
+
+def _words(word: str) -> str:
+    return word.replace("_", " ")
+
+
+def _equation_table(t: EquationTable) -> str:
+    head = "".join(
+        f"<th>{c}</th>"
+        for c in ("eq.", "status", "printed", "derived", "residual (printed − derived); note")
+    )
+    cap = f"<caption>{H.escape(t.caption)}</caption>\n" if t.caption else ""
+    rows = "".join(_equation_row(r) for r in t.rows)
+    return (
+        f'<div class="scroll"><table class="data equations">\n{cap}'
+        f"<thead><tr>{head}</tr></thead>\n<tbody>\n{rows}</tbody>\n</table></div>\n"
+    )
+
+
+def _figure(f: Figure) -> str:
+    anchor = "fig-" + H.slugify(f"{Path(f.path).parent.parent.name}-{Path(f.path).stem}")
+    cap = f"<figcaption><strong>{H.escape(f.label)}</strong> {H.escape(f.caption)}</figcaption>\n"
+    if not Path(f.path).is_file():
+        return f'<figure id="{anchor}">\n<p class="na">{H.escape(f.label)}: not available.</p>\n{cap}</figure>\n'
+    return (
+        f'<figure id="{anchor}">\n<img src="{H.png_data_uri(f.path)}" '
+        f'alt="{H.escape(f.label)}">\n{cap}</figure>\n'
+    )
+
+
+def _block(b: Block) -> str:
+    if isinstance(b, Paragraph):
+        return H.paragraph(b.text)
+    if isinstance(b, Table):
+        return _table(b)
+    if isinstance(b, Figure):
+        return _figure(b)
+    if isinstance(b, EquationTable):
+        return _equation_table(b)
+    if isinstance(b, Link):
+        return f'<p class="link"><a href="{H.escape(b.target)}">{H.escape(b.text)}</a></p>\n'
+    raise TypeError(f"unknown block type {type(b).__name__}")
+
+
+def _section(s: Section, numbers: dict[str, str], level: int) -> str:
+    h = min(level, 6)
+    num = numbers.get(s.id, "")
+    body = "".join(_block(b) for b in s.blocks)
+    body += "".join(_section(c, numbers, level + 1) for c in s.subsections)
+    return (
+        f'<section id="{H.escape(s.id)}">\n'
+        f'<h{h}><a href="#{H.escape(s.id)}"><span class="secno">{num}</span>'
+        f"{H.escape(s.title)}</a></h{h}>\n{body}</section>\n"
+    )
+
+
+# --------------------------------------------------------------------------- front matter
+
+_GROUPS = (
+    ("Equations audited", "audit", ("match", "differs", "not_checkable")),
+    ("Published numbers", "numbers", ("reproduced", "consistent", "not_reproduced")),
+    ("Claims", "claims", ("upheld", "not_upheld", "not_checkable")),
+)
+_TONE = {
+    "match": "good",
+    "reproduced": "good",
+    "consistent": "good",
+    "upheld": "good",
+    "differs": "bad",
+    "not_reproduced": "bad",
+    "not_upheld": "bad",
+    "not_checkable": "neutral",
+}
+_SHORT = {"not_checkable": "not checkable", "not_reproduced": "not reproduced"}
+
+
+def _scoreboard(rows: Sequence[ScoreRow], numbers: dict[str, str] | None = None) -> str:
+    n_cols = 1 + sum(len(w) for _, _, w in _GROUPS)
+    groups = "".join(
+        f'<th colspan="{len(words)}" class="first">{H.escape(name)}</th>'
+        for name, _, words in _GROUPS
+    )
+    words = "".join(
+        f'<th class="{"first" if i == 0 else ""}">{H.escape(_SHORT.get(w, w.replace("_", " ")))}</th>'
+        for _, _, ws in _GROUPS
+        for i, w in enumerate(ws)
+    )
+    body = []
+    for r in rows:
+        cells = []
+        for _, attr, ws in _GROUPS:
+            counts = getattr(r, attr)
+            for i, w in enumerate(ws):
+                n = int(counts.get(w, 0))
+                cls = ["n", _TONE.get(w, "neutral")]
+                if n == 0:
+                    cls.append("zero")
+                if i == 0:
+                    cls.append("first")
+                cells.append(
+                    f'<td class="{" ".join(cls)}" data-group="{attr}" data-word="{w}">{n}</td>'
+                )
+        extra = [
+            f"{w}: {n}"
+            for _, attr, ws in _GROUPS
+            for w, n in getattr(r, attr).items()
+            if w not in ws
+        ]
+        totals = " · ".join(
+            f"{sum(getattr(r, attr).values())} {noun}"
+            for attr, noun in (("audit", "equations"), ("numbers", "numbers"), ("claims", "claims"))
+        )
+        body.append(
+            f'<tr class="counts" id="score-{H.escape(r.slug)}">'
+            f'<td class="paper"><a href="#{H.escape(r.anchor)}">{H.escape(r.title)}</a>'
+            f'<span class="slug">{H.escape(r.slug)}: {totals}</span></td>{"".join(cells)}</tr>\n'
+        )
+        status, _, rest = r.line.partition(":")
+        tone = (
+            "full"
+            if status.lower().startswith("full")
+            else "none"
+            if status.lower().startswith("not")
+            else "partial"
+        )
+        warn = f" (unexpected words: {H.escape(', '.join(extra))})" if extra else ""
+        # one reason per line: the line's sentences end with ". " (ids have no spaces)
+        reasons = [x.strip() for x in re.split(r"(?<=\.)\s+", rest.strip()) if x.strip()]
+        items = "".join(f"<li>{H.escape(x)}</li>" for x in reasons)
+        body.append(
+            f'<tr class="line"><td colspan="{n_cols}"><strong class="{tone}">'
+            f"{H.escape(status)}</strong>{warn} "
+            f'<a href="#{H.escape(r.anchor)}">see section '
+            f"{H.escape((numbers or {}).get(r.anchor, r.anchor))}</a>"
+            f'<ul class="reasons">{items}</ul></td></tr>\n'
+        )
+    return (
+        '<table class="scoreboard" id="scoreboard">\n'
+        "<caption>Scoreboard</caption>\n"
+        f'<thead><tr class="groups"><th rowspan="2" class="paper">Paper</th>{groups}</tr>\n'
+        f'<tr class="words">{words}</tr></thead>\n'
+        f"<tbody>\n{''.join(body)}</tbody>\n</table>\n"
+    )
+
+
+def _toc(sections: Sequence[Section], numbers: dict[str, str], depth: int = 2) -> str:
+    def items(secs: Sequence[Section], level: int) -> str:
+        out = []
+        for s in secs:
+            sub = items(s.subsections, level + 1) if level < depth and s.subsections else ""
+            out.append(
+                f'<li><a href="#{H.escape(s.id)}"><span class="secno">{numbers[s.id]}</span>'
+                f"{H.escape(s.title)}</a>{sub}</li>\n"
+            )
+        return "<ul>\n" + "".join(out) + "</ul>\n"
+
+    return f'<nav class="toc" id="contents">\n<h2>Contents</h2>\n{items(sections, 1)}</nav>\n'
+
+
+def render_html(doc: Document) -> str:
+    """The whole report as one self-contained HTML document (a ``str``)."""
+    numbers = section_numbers(doc.sections)
+    body = (
+        '<header class="title">\n'
+        f"<h1>{H.escape(doc.title)}</h1>\n"
+        f'<p class="subtitle">{H.escape(doc.subtitle)}</p>\n'
+        f'<p class="generated">Generated from the workflow\'s results at git describe '
+        f"<code>{H.escape(doc.generated_from)}</code>.</p>\n</header>\n"
+    )
+    body += _scoreboard(doc.scoreboard, numbers)
+    body += (
+        '<p class="legend">Each number counts rows of the paper\'s equation_audit.csv or '
+        "verdicts.csv. Green: the paper and this reproduction agree (a printed equation matches "
+        "the derivation; a published number is reproduced exactly or is consistent with the "
+        "Monte Carlo spread; a claim holds). Red: they disagree (a printed equation differs, "
+        "usually a typo, and the derived form is used; a number or claim is not reproduced). "
+        "Grey: not checkable. "
+        'Each paper\'s name links to its section; <a href="#how-to-read">how to read '
+        "this report</a>.</p>\n"
+    )
+    body += _toc(doc.sections, numbers)
+    body += "".join(_section(s, numbers, 2) for s in doc.sections)
+    return H.page(doc.title, body, css=CSS)
+
+
+def write_html(doc: Document, path: str | os.PathLike[str]) -> Path:
+    """Render ``doc`` and write it atomically to ``path`` (pipeline.atomic)."""
+    return write_text(path, render_html(doc))

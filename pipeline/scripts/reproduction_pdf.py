@@ -1,0 +1,22 @@
+# Snakemake script: the combined reproduction report as a PDF, reports/reproduction.pdf
+# (Typst via the typst package; the same document as reports/reproduction.html).
+import contextlib
+import sys
+import time
+from pathlib import Path
+
+from pipeline.report.document import build_document
+from pipeline.report.reproduction_pdf import write_pdf
+
+with open(snakemake.log[0], "w") as log, contextlib.redirect_stdout(log):  # noqa: F821
+    sys.stderr = log
+    t0 = time.perf_counter()
+    root = Path.cwd()
+    doc = build_document(
+        root=root,
+        results_dir=snakemake.config["results_dir"],  # noqa: F821
+        reports_dir=snakemake.config["reports_dir"],  # noqa: F821
+        config=Path(snakemake.input.config_file).parent,  # noqa: F821
+    )
+    out = write_pdf(doc, snakemake.output[0], root=root)  # noqa: F821
+    print(f"wrote {out} ({out.stat().st_size} bytes) in {time.perf_counter() - t0:.1f} s")

@@ -1,0 +1,21 @@
+# Snakemake script: the combined reproduction report, reports/reproduction.html.
+import sys
+import time
+from pathlib import Path
+
+from pipeline.report.document import build_document
+from pipeline.report.reproduction_html import write_html
+
+with open(snakemake.log[0], "w") as log:  # noqa: F821
+    sys.stderr = log
+    t0 = time.perf_counter()
+    doc = build_document(
+        root=Path.cwd(),
+        results_dir=snakemake.config["results_dir"],  # noqa: F821
+        reports_dir=snakemake.config["reports_dir"],  # noqa: F821
+        config=Path(snakemake.input.config_file).parent,  # noqa: F821
+    )
+    out = write_html(doc, snakemake.output[0])  # noqa: F821
+    for row in doc.scoreboard:
+        print(f"{row.slug}: {row.line}", file=log)
+    print(f"wrote {out} ({out.stat().st_size} bytes) in {time.perf_counter() - t0:.1f} s", file=log)

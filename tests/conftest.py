@@ -1,0 +1,26 @@
+"""Session fixtures shared by the test modules."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from tests.workflow_harness import ROOT, have_results, reduced_run
+
+
+@pytest.fixture(scope="session")
+def workflow_run(tmp_path_factory) -> Path:
+    """The root of a reduced copy of the repository in which the whole default workflow has run
+    (once per test session; the modules that use it share it and must not change it, except
+    temporarily)."""
+    return reduced_run(tmp_path_factory.mktemp("repo"))
+
+
+@pytest.fixture(scope="session")
+def results_repo(request) -> Path:
+    """A repository root with every paper's results and pages: this checkout if the workflow has
+    run here, else the reduced run of ``workflow_run`` (a fresh clone, as in CI)."""
+    if have_results(ROOT):
+        return ROOT
+    return request.getfixturevalue("workflow_run")

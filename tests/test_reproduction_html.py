@@ -1,0 +1,580 @@
+"""The combined report reports/reproduction.html (pipeline.report.document + reproduction_html).
+
+Two cases, each checked in full:
+
+* ``repository``: the document built from the repository's own ``results/`` and ``reports/``
+  (on a fresh clone, from the reduced workflow run of ``results_repo``, tests/conftest.py);
+* ``synthetic``: a small results tree written here (verdicts and audit rows for every
+  published item of the repository's ``config/published``, MathML, distinct PNG figures,
+  provenance, benchmarks) with the per-paper pages rendered by the papers' own report
+  modules. It always runs, so the suite never passes without checking a report.
+
+Checks: the HTML parses (balanced elements, well-formed MathML), every ``#id`` link
+resolves, every relative href exists beside the report, every image is a data URI and
+nothing refers to a network; the scoreboard counts equal counts computed here with pandas
+from verdicts.csv and equation_audit.csv; and headless Chromium (``/usr/bin/chromium``, the
+DevTools protocol over a pipe) loads the file with no console error, exception or failed
+load, and writes a screenshot of the scoreboard to ``results/reproduction_scoreboard.png``.
+"""
+
+from __future__ import annotations
+
+import base64
+import dataclasses
+import fcntl
+import json
+import os
+import re
+import select
+import shutil
+import subprocess
+import tempfile
+import time
+import xml.etree.ElementTree as ET
+from html.parser import HTMLParser
+from pathlib import Path
+
+import pandas as pd
+import pytest
+import yaml
+
+from pipeline.report.document import Document, build_document
+from pipeline.report.reproduction_html import render_html, write_html
+from tests.workflow_harness import NEEDS_RUN
+
+ROOT = Path(__file__).resolve().parents[1]
+CHROMIUM = Path("/usr/bin/chromium")
+SCREENSHOT = ROOT / "results" / "reproduction_scoreboard.png"
+SLUGS = yaml.safe_load((ROOT / "config" / "config.yaml").read_text(encoding="utf-8"))["papers"]
+VOID = {"area", "base", "br", "col", "embed", "hr", "img", "input", "link", "meta", "source",
+        "track", "wbr"}  # fmt: skip
+
+
+# --------------------------------------------------------------------------- synthetic tree
+
+_MATH = '<math xmlns="http://www.w3.org/1998/Math/MathML"><mrow>{}</mrow></math>'
+
+
+def _png(index: int, path: Path) -> None:
+    from PIL import Image
+
+    path.parent.mkdir(parents=True, exist_ok=True)
+    Image.new("RGB", (48, 32), ((37 * index) % 256, (91 * index) % 256, 200)).save(path)
+
+
+def _figure_names(slug: str) -> list[str]:
+    if slug == "north_finding":
+        from pipeline.north_finding.figures import FIGURE_FILES
+
+        return [f"{s}.png" for s in FIGURE_FILES]
+    if slug == "platform_drift":
+        from pipeline.platform_drift.figures import FIGURES
+
+        return [f"fig{n}_{name}.png" for name, (n, _) in FIGURES.items()] + ["fig9_latitude.png"]
+    from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
+
+    return [*FIGURES, SWEEP_FIGURE]
+
+
+def _synthetic_verdicts(published: dict) -> pd.DataFrame:
+    items = published.get("items") or published.get("values") or []
+    rows = []
+    for i, it in enumerate(items):
+        kind = it.get("kind", "exact")
+        good = "consistent" if kind == "statistical" else "reproduced"
+        verdict = "not_reproduced" if i % 4 == 3 else good
+        method = it.get("method") or it.get("filter") or it.get("scheme") or ""
+        rows.append([it["id"], kind, it.get("quantity", ""), method, str(it.get("value", "")),
+                     "1.0", verdict, f"synthetic note {i}"])  # fmt: skip
+    words = ("upheld", "not_upheld", "upheld", "not_checkable")
+    for i, c in enumerate(published.get("claims") or []):
+        rows.append([c["id"], "claim", "", "", c.get("text", ""), "evidence", words[i % 4],
+                     c.get("source", "")])  # fmt: skip
+    return pd.DataFrame(
+        rows,
+        columns=["id", "kind", "quantity", "method", "published", "reproduced", "verdict", "note"],
+    )
+
+
+def _synthetic_tree(base: Path) -> Path:
+    """A small but complete results tree (see the module docstring); returns its root."""
+    from pipeline.config import sha256_of
+    from pipeline.report import altimeter_attitude as aa
+    from pipeline.report import north_finding as nf
+    from pipeline.report import platform_drift as pd_page
+
+    shutil.copytree(ROOT / "config", base / "config")
+    fig_index = 0
+    for slug in SLUGS:
+        rdir = base / "results" / slug
+        rdir.mkdir(parents=True)
+        published = yaml.safe_load(
+            (base / "config" / "published" / f"{slug}.yaml").read_text(encoding="utf-8")
+        )
+        _synthetic_verdicts(published).to_csv(rdir / "verdicts.csv", index=False)
+        statuses = ["match", "differs", "not_checkable", "match", "differs", "match", "match"]
+        audit = pd.DataFrame(
+            {
+                "equation": [str(i + 1) for i in range(len(statuses))],
+                "status": statuses,
+                "residual": [
+                    "0" if s == "match" else ("x - 1" if s == "differs" else "") for s in statuses
+                ],  # fmt: skip
+                "note": [f"note {i}" for i in range(len(statuses))],
+            }
+        )
+        audit.to_csv(rdir / "equation_audit.csv", index=False)
+        math = []
+        for r in audit.itertuples():
+            ok = r.status != "not_checkable"
+            math.append(
+                {
+                    "equation": r.equation,
+                    "status": r.status,
+                    "printed_mathml": _MATH.format("<mi>x</mi><mo>+</mo><mn>1</mn>")
+                    if ok
+                    else None,
+                    "derived_mathml": _MATH.format("<msup><mi>x</mi><mn>2</mn></msup>")
+                    if ok
+                    else None,
+                    "residual_mathml": _MATH.format("<mi>&#945;</mi><mo>-</mo><mn>1</mn>")
+                    if r.status == "differs"
+                    else None,
+                    "printed_srepr": "Symbol('x')" if ok else None,
+                    "derived_srepr": "Symbol('x')" if ok else None,
+                    "residual_srepr": "Integer(1)" if r.status == "differs" else None,
+                }
+            )
+        (rdir / "equation_math.json").write_text(json.dumps(math), encoding="utf-8")
+        for name in _figure_names(slug):
+            fig_index += 1
+            _png(fig_index, rdir / "figures" / name)
+        for k, f in enumerate(sorted((base / "config" / "scenarios" / slug).glob("*.yaml"))):
+            prov = {
+                "config_sha256": sha256_of(yaml.safe_load(f.read_text(encoding="utf-8"))),
+                "git_describe": "synthetic",
+                "packages": {"python": "3.11", "numpy": "2.0"},
+                "scenario": f.stem,
+                "scenario_file": f"config/scenarios/{slug}/{f.name}",
+                "seed": 1000 + k,
+                "seed_scheme": "SeedSequence([seed, scenario, trial])",
+            }
+            (rdir / f.stem).mkdir()
+            (rdir / f.stem / "provenance.json").write_text(json.dumps(prov), encoding="utf-8")
+        bench = rdir / "benchmarks"
+        bench.mkdir()
+        for job, s in (("audit", 1.25), ("verdicts", 0.5)):
+            (bench / f"{job}.tsv").write_text(
+                f"s\th:m:s\tmax_rss\n{s}\t0:00:01\t100.0\n", encoding="utf-8"
+            )
+        notebooks = base / "reports" / "notebooks"
+        notebooks.mkdir(parents=True, exist_ok=True)
+        (notebooks / f"{slug}.html").write_text(
+            f"<!DOCTYPE html><html><body><p>{slug}</p></body></html>", encoding="utf-8"
+        )
+        scen = base / "config" / "scenarios" / slug
+        out = base / "reports" / f"{slug}.html"
+        if slug == "north_finding":
+            nf.build_page(rdir, scen, base / "config" / "published" / f"{slug}.yaml", out)
+        elif slug == "platform_drift":
+            pd_page.build_page(rdir, scen, out)
+        else:
+            aa.build_page(rdir, scen, out, published_scenario="paper")
+    return base
+
+
+# --------------------------------------------------------------------------- fixtures
+
+
+@dataclasses.dataclass
+class Built:
+    case: str
+    root: Path
+    reports: Path
+    doc: Document
+    html: str
+    path: Path
+
+
+@pytest.fixture(scope="module", params=[pytest.param("repository", marks=NEEDS_RUN), "synthetic"])
+def built(request, tmp_path_factory) -> Built:
+    if request.param == "repository":
+        # this checkout's results, or on a fresh clone the reduced workflow run's
+        root = request.getfixturevalue("results_repo")
+    else:
+        root = _synthetic_tree(tmp_path_factory.mktemp("synthetic"))
+    doc = build_document(root)
+    path = write_html(doc, tmp_path_factory.mktemp("report") / "reproduction.html")
+    return Built(request.param, root, root / "reports", doc, path.read_text("utf-8"), path)
+
+
+# --------------------------------------------------------------------------- 1. structure
+
+
+class _Collector(HTMLParser):
+    def __init__(self) -> None:
+        super().__init__(convert_charrefs=True)
+        self.ids: list[str] = []
+        self.refs: list[tuple[str, str, str]] = []  # (tag, attribute, value)
+        self.stack: list[str] = []
+        self.errors: list[str] = []
+        self.tags: list[str] = []
+        self.math_depth = 0
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        self.tags.append(tag)
+        if "id" in a:
+            self.ids.append(a["id"])
+        for key in ("href", "src"):
+            if key in a:
+                self.refs.append((tag, key, a[key] or ""))
+        if tag not in VOID:
+            self.stack.append(tag)
+
+    def handle_startendtag(self, tag, attrs):
+        a = dict(attrs)
+        if "id" in a:
+            self.ids.append(a["id"])
+
+    def handle_endtag(self, tag):
+        if tag in VOID:
+            return
+        if not self.stack or self.stack[-1] != tag:
+            self.errors.append(f"</{tag}> closes <{self.stack[-1] if self.stack else None}>")
+            if tag in self.stack:
+                while self.stack and self.stack.pop() != tag:
+                    pass
+            return
+        self.stack.pop()
+
+
+def _collect(html: str) -> _Collector:
+    c = _Collector()
+    c.feed(html)
+    c.close()
+    return c
+
+
+def test_html_parses_and_every_reference_resolves(built):
+    c = _collect(built.html)
+    assert not c.errors, c.errors[:5]
+    assert c.stack == [], f"unclosed elements: {c.stack[:10]}"
+    assert len(c.ids) == len(set(c.ids)), "duplicate ids"
+    ids = set(c.ids)
+    internal = [v for _, k, v in c.refs if k == "href" and v.startswith("#")]
+    assert internal, "no internal links"
+    missing = sorted({v for v in internal if v[1:] not in ids})
+    assert not missing, f"links to missing ids: {missing[:10]}"
+    for slug in SLUGS:
+        assert slug in ids and f"#{slug}" in internal
+    relative = [v for t, k, v in c.refs if k == "href" and t == "a" and not v.startswith("#")]
+    assert relative, "no relative links (notebooks)"
+    for href in relative:
+        assert not re.match(r"^[a-z][a-z0-9+.-]*:", href), f"non-relative link {href}"
+        assert (built.reports / href).is_file(), f"{href} does not exist beside the report"
+    for slug in SLUGS:
+        assert f"notebooks/{slug}.html" in relative
+    imgs = [v for t, k, v in c.refs if t == "img"]
+    assert imgs, "no figures"
+    for src in imgs:
+        assert src.startswith("data:image/png;base64,"), src[:60]
+        assert base64.b64decode(src.split(",", 1)[1])[:8] == b"\x89PNG\r\n\x1a\n"
+    for tag, _, value in c.refs:
+        if tag in ("script", "link", "img", "iframe", "source"):
+            assert not re.match(r"^\s*(https?:)?//", value), f"network reference {tag} {value}"
+    assert "script" not in c.tags and "link" not in c.tags and "iframe" not in c.tags
+    assert not re.search(r"@import|url\(\s*['\"]?(https?:)?//", built.html)
+
+
+def test_mathml_is_well_formed_and_present(built):
+    maths = re.findall(r"<math\b.*?</math>", built.html, flags=re.S)
+    n_expected = sum(
+        1
+        for s in built.doc.sections
+        for sub in s.subsections
+        for b in sub.blocks
+        if type(b).__name__ == "EquationTable"
+        for r in b.rows
+        for m in (r.printed_mathml, r.derived_mathml)
+        if m
+    )
+    assert n_expected > 0 and len(maths) >= n_expected
+    for m in maths:
+        ET.fromstring(m)  # raises on malformed XML
+
+
+def test_rendering_is_deterministic(built):
+    assert render_html(built.doc) == built.html
+
+
+def test_sections_in_the_documented_order(built):
+    ids = [s.id for s in built.doc.sections]
+    assert ids == ["how-to-read", *SLUGS, "provenance"]
+    for slug, sec in zip(SLUGS, built.doc.sections[1:-1], strict=True):
+        assert [s.title for s in sec.subsections] == [
+            "Summary",
+            "Equation audit",
+            "Published vs reproduced",
+            "Figures",
+            "Assumptions",
+            "Findings beyond the paper",
+            "Notebook",
+        ], slug
+
+
+# --------------------------------------------------------------------------- 2. the counts
+
+
+def _expected_counts(results: Path, slug: str) -> tuple[dict, dict, dict]:
+    audit = pd.read_csv(results / slug / "equation_audit.csv", dtype=str, keep_default_na=False)
+    verdicts = pd.read_csv(results / slug / "verdicts.csv", dtype=str, keep_default_na=False)
+    is_claim = verdicts["kind"] == "claim"
+    return (
+        audit["status"].value_counts().to_dict(),
+        verdicts.loc[~is_claim, "verdict"].value_counts().to_dict(),
+        verdicts.loc[is_claim, "verdict"].value_counts().to_dict(),
+    )
+
+
+def _nonzero(d: dict) -> dict:
+    return {k: v for k, v in d.items() if v}
+
+
+def _html_counts(html: str, slug: str) -> dict[str, dict[str, int]]:
+    row = re.search(rf'<tr class="counts" id="score-{re.escape(slug)}">(.*?)</tr>', html, re.S)
+    assert row, f"no scoreboard row for {slug}"
+    out: dict[str, dict[str, int]] = {}
+    for group, word, n in re.findall(
+        r'data-group="(\w+)" data-word="(\w+)">(\d+)</td>', row.group(1)
+    ):
+        out.setdefault(group, {})[word] = int(n)
+    return out
+
+
+def test_scoreboard_counts_equal_the_csv_counts(built):
+    assert [r.slug for r in built.doc.scoreboard] == SLUGS
+    for row in built.doc.scoreboard:
+        audit, numbers, claims = _expected_counts(built.root / "results", row.slug)
+        assert _nonzero(row.audit) == audit, row.slug
+        assert _nonzero(row.numbers) == numbers, row.slug
+        assert _nonzero(row.claims) == claims, row.slug
+        shown = _html_counts(built.html, row.slug)
+        assert _nonzero(shown["audit"]) == audit
+        assert _nonzero(shown["numbers"]) == numbers
+        assert _nonzero(shown["claims"]) == claims
+        n_numbers, n_good = (
+            sum(numbers.values()),
+            numbers.get("reproduced", 0) + numbers.get("consistent", 0),
+        )
+        if n_numbers:
+            assert f"{n_good} of {n_numbers} published number" in row.line
+        n_claims = sum(claims.values())
+        if n_claims:
+            assert f"{claims.get('upheld', 0)} of {n_claims} claim" in row.line
+        full = not (n_numbers - n_good) and claims.get("upheld", 0) == n_claims
+        assert row.line.startswith("Full reproduction" if full else ("Partial", "Not"))
+
+
+def test_line_names_the_failures():
+    audit = pd.DataFrame({"equation": ["1", "2"], "status": ["match", "differs"],
+                          "residual": ["0", "x"], "note": ["", ""]})  # fmt: skip
+    verdicts = pd.DataFrame(
+        [
+            ["A1", "exact", "q", "m", "1", "1", "reproduced", ""],
+            ["A2", "statistical", "q", "m", "1", "2", "not_reproduced", ""],
+            ["C1/a", "claim", "", "", "t", "e", "not_upheld", ""],
+            ["C1/b", "claim", "", "", "t", "e", "upheld", ""],
+        ],
+        columns=["id", "kind", "quantity", "method", "published", "reproduced", "verdict", "note"],
+    )
+    from pipeline.report.document import rescience_line
+
+    line = rescience_line(audit, verdicts)
+    assert line.startswith("Partial reproduction: 1 of 2 published numbers")
+    assert "A2 (outside the Monte Carlo tolerance)" in line and "not upheld: C1" in line
+    assert "1 of 2 printed equations differ" in line
+    good = verdicts.assign(verdict=["reproduced", "consistent", "upheld", "upheld"])
+    assert rescience_line(audit, good).startswith("Full reproduction")
+
+
+# --------------------------------------------------------------------------- 3. the browser
+
+
+def _child_fds(read_fd: int, write_fd: int) -> None:
+    hi_r = fcntl.fcntl(read_fd, fcntl.F_DUPFD, 10)
+    hi_w = fcntl.fcntl(write_fd, fcntl.F_DUPFD, 10)
+    os.dup2(hi_r, 3)
+    os.dup2(hi_w, 4)
+
+
+def chromium_load(url: str, screenshot: Path | None = None, timeout: float = 90.0) -> list[str]:
+    """Load ``url`` in headless Chromium driven over the DevTools pipe (fds 3 and 4);
+    return its console errors/warnings, uncaught exceptions and failed loads, and save a
+    PNG of the top of the page down to the end of ``#scoreboard`` to ``screenshot``."""
+    to_chrome_r, to_chrome_w = os.pipe()
+    from_chrome_r, from_chrome_w = os.pipe()
+    with tempfile.TemporaryDirectory() as profile:
+        proc = subprocess.Popen(
+            [
+                str(CHROMIUM),
+                "--headless",
+                "--no-sandbox",
+                "--disable-gpu",
+                "--disable-quic",
+                "--no-first-run",
+                "--disable-background-networking",
+                "--disable-component-update",
+                "--disable-sync",
+                f"--user-data-dir={profile}",
+                "--hide-scrollbars",
+                "--remote-debugging-pipe",
+                "about:blank",
+            ],  # fmt: skip
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+            close_fds=False,
+            preexec_fn=lambda: _child_fds(to_chrome_r, from_chrome_w),
+        )
+        os.close(to_chrome_r)
+        os.close(from_chrome_w)
+        buf = b""
+        next_id = 0
+        events: list[dict] = []
+        deadline = time.monotonic() + timeout
+
+        def send(method: str, params: dict | None = None, session: str | None = None) -> int:
+            nonlocal next_id
+            next_id += 1
+            msg = {"id": next_id, "method": method, "params": params or {}}
+            if session:
+                msg["sessionId"] = session
+            os.write(to_chrome_w, json.dumps(msg).encode() + b"\0")
+            return next_id
+
+        def wait(pred, until: float) -> dict:
+            nonlocal buf
+            while True:
+                while b"\0" in buf:
+                    raw, buf = buf.split(b"\0", 1)
+                    msg = json.loads(raw)
+                    if "method" in msg:
+                        events.append(msg)
+                    if pred(msg):
+                        return msg
+                if time.monotonic() > until:
+                    raise TimeoutError("no answer from chromium")
+                ready, _, _ = select.select([from_chrome_r], [], [], 0.2)
+                if ready:
+                    chunk = os.read(from_chrome_r, 1 << 22)
+                    if not chunk:
+                        raise RuntimeError("chromium closed the DevTools pipe")
+                    buf += chunk
+
+        def call(method: str, params: dict | None = None, session: str | None = None) -> dict:
+            i = send(method, params, session)
+            reply = wait(lambda m: m.get("id") == i, deadline)
+            assert "error" not in reply, reply
+            return reply.get("result", {})
+
+        try:
+            target = call("Target.createTarget", {"url": "about:blank"})["targetId"]
+            sid = call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+            for method in ("Runtime.enable", "Log.enable", "Page.enable"):
+                call(method, session=sid)
+            call(
+                "Emulation.setDeviceMetricsOverride",
+                {"width": 1400, "height": 1000, "deviceScaleFactor": 1, "mobile": False},
+                session=sid,
+            )
+            call("Page.navigate", {"url": url}, session=sid)
+            wait(lambda m: m.get("method") == "Page.loadEventFired", deadline)
+            try:  # late messages
+                wait(lambda m: False, time.monotonic() + 1.0)
+            except TimeoutError:
+                pass
+            if screenshot is not None:
+                bottom = call(
+                    "Runtime.evaluate",
+                    {
+                        "expression": "(() => { const e = document.querySelector("
+                        "'#scoreboard'); const l = document.querySelector('p.legend'); "
+                        "const r = (l || e).getBoundingClientRect(); "
+                        "return Math.ceil(r.bottom + window.scrollY + 16); })()",
+                        "returnByValue": True,
+                    },
+                    session=sid,
+                )["result"]["value"]
+                shot = call(
+                    "Page.captureScreenshot",
+                    {
+                        "format": "png",
+                        "captureBeyondViewport": True,
+                        "clip": {"x": 0, "y": 0, "width": 1400, "height": bottom, "scale": 1},
+                    },
+                    session=sid,
+                )
+                screenshot.parent.mkdir(parents=True, exist_ok=True)
+                screenshot.write_bytes(base64.b64decode(shot["data"]))
+            send("Browser.close")
+        finally:
+            try:
+                proc.wait(timeout=15)
+            except subprocess.TimeoutExpired:
+                proc.kill()
+                proc.wait()
+            os.close(to_chrome_w)
+            os.close(from_chrome_r)
+    problems = []
+    for e in events:
+        p = e["params"]
+        if e["method"] == "Runtime.consoleAPICalled" and p["type"] in (
+            "error",
+            "warning",
+            "assert",
+        ):
+            problems.append(f"console.{p['type']}: " + " ".join(str(a.get("value", a.get(
+                "description", ""))) for a in p["args"]))  # fmt: skip
+        elif e["method"] == "Runtime.exceptionThrown":
+            d = p["exceptionDetails"]
+            problems.append(f"exception: {d.get('exception', {}).get('description', d['text'])}")
+        elif e["method"] == "Log.entryAdded" and p["entry"]["level"] in ("error", "warning"):
+            problems.append(f"log.{p['entry']['level']}: {p['entry']['text']}")
+    return problems
+
+
+needs_chromium = pytest.mark.skipif(not CHROMIUM.exists(), reason="/usr/bin/chromium not installed")
+
+
+@needs_chromium
+def test_chromium_probe_sees_console_errors(tmp_path):
+    """The probe itself works: a page with a console error, an exception and a missing
+    image is reported (so an empty list below means a clean page, not a deaf probe)."""
+    bad = tmp_path / "bad.html"
+    bad.write_text(
+        '<!DOCTYPE html><html><head><title>x</title></head><body><img src="missing.png">'
+        '<script>console.error("boom"); undefinedFunction();</script></body></html>',
+        encoding="utf-8",
+    )
+    problems = chromium_load(bad.as_uri())
+    text = "\n".join(problems)
+    assert "boom" in text and "undefinedFunction" in text and "ERR_FILE_NOT_FOUND" in text
+
+
+@needs_chromium
+def test_chromium_loads_the_report_cleanly_and_screenshots_the_scoreboard(built, tmp_path):
+    # the real results (this checkout's, or the reduced run's on a fresh clone) give the
+    # screenshot a person looks at, under results/; the synthetic one stays in tmp_path
+    shot = SCREENSHOT if built.case == "repository" else tmp_path / "scoreboard.png"
+    problems = chromium_load(built.path.as_uri(), screenshot=shot)
+    assert problems == []
+    data = shot.read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    from PIL import Image
+
+    with Image.open(shot) as im:
+        width, height = im.size
+        assert width == 1400 and 300 < height < 3000
+        colours = im.convert("RGB").getcolors(maxcolors=1 << 20)
+        assert colours is not None and len(colours) > 50, "screenshot looks blank"

@@ -1,0 +1,368 @@
+"""reports/reproduction.pdf (pipeline/report/reproduction_pdf.py).
+
+A small document with every block kind and hostile text compiles and reads back verbatim; the
+real report, built from results/ (or from a reduced workflow run on a fresh clone), is
+byte-identical when rebuilt in another process, renders every page with pdftoppm without an
+error, uses only the fonts embedded in the typst package, starts every top-level section on a
+new page, and has the HTML report's numbered section titles, in the same order.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+from html.parser import HTMLParser
+from pathlib import Path
+
+import pytest
+
+from pipeline.report.document import (
+    Document,
+    EquationRow,
+    EquationTable,
+    Figure,
+    Link,
+    Paragraph,
+    ScoreRow,
+    Section,
+    Table,
+)
+from tests.workflow_harness import NEEDS_RUN
+
+typst = pytest.importorskip("typst")
+from pipeline.report import reproduction_pdf as R  # noqa: E402 - needs typst
+
+ROOT = Path(__file__).resolve().parents[1]
+POPPLER = {name: shutil.which(name) for name in ("pdftoppm", "pdftotext", "pdfinfo", "pdffonts")}
+pytestmark = pytest.mark.skipif(
+    POPPLER["pdftoppm"] is None or POPPLER["pdftotext"] is None or POPPLER["pdfinfo"] is None,
+    reason="poppler-utils (pdftoppm, pdftotext, pdfinfo) not installed",
+)
+
+#: Font families the typst package embeds (system fonts are ignored when compiling).
+EMBEDDED_FONTS = ("LibertinusSerif", "NewCM", "DejaVuSansMono")
+
+
+# ------------------------------------------------------------------------------------------
+# helpers
+# ------------------------------------------------------------------------------------------
+def _run(*cmd: str) -> subprocess.CompletedProcess:
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+
+
+def page_count(pdf: Path) -> int:
+    r = _run(POPPLER["pdfinfo"], str(pdf))
+    assert r.returncode == 0, r.stderr
+    return int(re.search(r"^Pages:\s+(\d+)", r.stdout, re.M).group(1))
+
+
+def page_texts(pdf: Path) -> list[str]:
+    """Text of every page, whitespace collapsed and typographic quotes made plain."""
+    r = _run(POPPLER["pdftotext"], "-enc", "UTF-8", str(pdf), "-")
+    assert r.returncode == 0 and not r.stderr.strip(), r.stderr
+    pages = r.stdout.split("\f")
+    if pages and not pages[-1].strip():
+        pages = pages[:-1]
+    return [_norm(p) for p in pages]
+
+
+def _norm(text: str) -> str:
+    text = text.replace("\u2019", "'").replace("\u2018", "'")
+    text = text.replace("\u201c", '"').replace("\u201d", '"').replace("\u200b", "")
+    return " ".join(text.split())
+
+
+def render_pages(pdf: Path, out: Path) -> subprocess.CompletedProcess:
+    out.mkdir(parents=True, exist_ok=True)
+    return _run(POPPLER["pdftoppm"], "-r", "50", "-png", str(pdf), str(out / "page"))
+
+
+class _Headings(HTMLParser):
+    """(number, title) of every <h2>..<h6> with a section number, in document order."""
+
+    def __init__(self) -> None:
+        super().__init__(convert_charrefs=True)
+        self.items: list[tuple[str, str]] = []
+        self._h: list[str] | None = None
+        self._no: list[str] | None = None
+
+    def handle_starttag(self, tag, attrs):
+        if re.fullmatch(r"h[2-6]", tag):
+            self._h = []
+        elif tag == "span" and self._h is not None and ("class", "secno") in attrs:
+            self._no = []
+
+    def handle_endtag(self, tag):
+        if tag == "span" and self._no is not None:
+            self._no_text = "".join(self._no).strip()
+            self._no = None
+        elif re.fullmatch(r"h[2-6]", tag) and self._h is not None:
+            number = getattr(self, "_no_text", "")
+            if number:
+                title = " ".join("".join(self._h).split())
+                self.items.append((number, title[len(number) :].strip()))
+            self._h, self._no_text = None, ""
+
+    def handle_data(self, data):
+        if self._h is not None:
+            self._h.append(data)
+        if self._no is not None:
+            self._no.append(data)
+
+
+def html_headings(html: str) -> list[tuple[str, str]]:
+    p = _Headings()
+    p.feed(html)
+    return p.items
+
+
+# ------------------------------------------------------------------------------------------
+# a small document: every block kind, hostile text, the expression fallback
+# ------------------------------------------------------------------------------------------
+NASTY = r"#set $x$ *bold* _it_ @ref <lab> [b] {c} \back // not a comment = - + 1. ~ ` ^ 50 %"
+
+
+def _small_document(root: Path) -> Document:
+    from PIL import Image
+
+    (root / "figs").mkdir(parents=True, exist_ok=True)
+    Image.new("RGB", (260, 180), (40, 90, 160)).save(root / "figs" / "fig1.png")
+    rows = [
+        EquationRow("p", "1", "not_checkable", "not in the text", "", *([None] * 6)),
+        EquationRow("p", "2", "not_checkable", "not in the text", "", *([None] * 6)),
+        EquationRow(
+            "p",
+            "3.a",
+            "differs",
+            "typo " + NASTY,
+            "x - y",
+            None,
+            None,
+            None,
+            "Symbol('omega_x')",
+            "Mul(Integer(2), Symbol('omega_x'))",
+            "Mul(Integer(-1), Symbol('omega_x'))",
+        ),
+        EquationRow(
+            "p",
+            "4",
+            "match",
+            "",
+            "0",
+            None,
+            None,
+            None,
+            "ImmutableDenseMatrix([[sin(Symbol('theta'))], [Pow(Symbol('x'), Integer(-1))]])",
+            "ImmutableDenseMatrix([[sin(Symbol('theta'))], [Pow(Symbol('x'), Integer(-1))]])",
+            None,
+        ),
+        EquationRow(
+            "p", "5", "match", "", "0", None, None, None, "not sympy (", "Integer(1)", None
+        ),
+    ]
+    paper = Section(
+        "paper",
+        "A paper: " + NASTY,
+        [Paragraph("Summary " + NASTY + "\n\nSecond paragraph.")],
+        [
+            Section("paper-eq", "Equation audit", [EquationTable(rows, caption="Audit")]),
+            Section(
+                "paper-tab",
+                "Numbers",
+                [
+                    Table(
+                        ["id", "verdict", "note"],
+                        [["T1.a_b", "not_reproduced", NASTY], ["T2", "reproduced", "x" * 90]],
+                        caption="Table 1 " + NASTY,
+                        highlight=[0],
+                    )
+                ],
+            ),
+            Section(
+                "paper-fig",
+                "Figures",
+                [
+                    Figure(str(root / "figs" / "fig1.png"), "A caption " + NASTY, "Fig. 1"),
+                    Link("the notebook", "notebooks/p.html"),
+                    Link("back to the top", "#paper"),
+                    Link("nowhere", "#missing"),
+                ],
+            ),
+        ],
+    )
+    score = ScoreRow(
+        "p",
+        "A paper",
+        {"match": 2, "differs": 1, "not_checkable": 2},
+        {"reproduced": 1, "consistent": 0, "not_reproduced": 1},
+        {"upheld": 0, "not_upheld": 0, "not_checkable": 0},
+        "Partial reproduction " + NASTY,
+        "paper",
+    )
+    return Document("Title " + NASTY, "Sub " + NASTY, "v0-1-gabc", [score], [paper])
+
+
+def test_small_document_compiles_and_reads_back(tmp_path):
+    doc = _small_document(tmp_path)
+    build = R.compile_pdf(doc, tmp_path)
+    assert build.warnings == () and build.fallbacks == frozenset()
+    pdf = tmp_path / "small.pdf"
+    pdf.write_bytes(build.data)
+    r = render_pages(pdf, tmp_path / "png")
+    assert r.returncode == 0 and r.stderr == "", r.stderr
+    pages = page_texts(pdf)
+    text = " ".join(pages)
+    nasty = _norm(NASTY)
+    assert text.count(nasty) >= 6, text  # title, subtitle, line, heading, paragraph, table ...
+    assert "1 A paper: " + nasty in pages[2]  # title page, contents, then the first section
+    assert "Eqs. 1–2 not checkable" in text  # formless rows with the same note: one line
+    assert "Fig. 1. A caption" in text
+    assert "not sympy (" in text  # an unreadable srepr is shown as text
+    assert "printed" in text and "= derived" in text
+
+
+def test_expression_that_does_not_typeset_falls_back_to_text(tmp_path, monkeypatch, capsys):
+    doc = _small_document(tmp_path)
+    real = R.typst_math
+
+    def broken(expr, **kw):
+        out = real(expr, **kw)
+        return out + " #" if "omega" in out else out  # "#" is invalid in math
+
+    monkeypatch.setattr(R, "typst_math", broken)
+    build = R.compile_pdf(doc, tmp_path)
+    assert build.fallbacks and all("omega" in s for s in build.fallbacks)
+    assert "did not typeset" in capsys.readouterr().err
+    pdf = tmp_path / "fallback.pdf"
+    pdf.write_bytes(build.data)
+    assert "2*omega_x" in " ".join(page_texts(pdf))
+
+
+def test_escape_and_breakable():
+    assert R.escape("a_b *c* #d $e$") == r"a\_b \*c\* \#d \$e\$"
+    assert R.escape("one\n two") == "one two"
+    assert "\u200b" in R._breakable("filters.linear_kf.p0_radius")
+    assert R._breakable("50.0054709908323") == "50.0054709908323"
+
+
+# ------------------------------------------------------------------------------------------
+# the real report
+# ------------------------------------------------------------------------------------------
+BUILD_SCRIPT = """
+import sys
+from pathlib import Path
+from pipeline.report.document import build_document
+from pipeline.report.reproduction_pdf import write_pdf
+root = Path(sys.argv[1])
+write_pdf(build_document(root=root), sys.argv[2], root=root)
+"""
+
+
+@pytest.fixture(scope="module")
+def report(results_repo, tmp_path_factory):
+    """(document, PDF path, build seconds, repo) of the real report."""
+    from pipeline.report.document import build_document
+
+    out = tmp_path_factory.mktemp("pdf") / "reproduction.pdf"
+    t0 = time.perf_counter()
+    doc = build_document(root=results_repo)
+    build = R.compile_pdf(doc, results_repo)
+    seconds = time.perf_counter() - t0
+    out.write_bytes(build.data)
+    print(f"reproduction.pdf: {len(build.data)} bytes, built in {seconds:.1f} s")
+    return doc, out, build, results_repo
+
+
+@pytest.mark.parametrize("_", [pytest.param(None, marks=NEEDS_RUN)])
+def test_every_expression_typeset_no_warnings(report, _):
+    _, _, build, _ = report
+    assert build.fallbacks == frozenset()
+    assert build.warnings == ()
+
+
+@pytest.mark.parametrize("_", [pytest.param(None, marks=NEEDS_RUN)])
+def test_rebuild_in_another_process_is_byte_identical(report, tmp_path, _):
+    _, pdf, _, repo = report
+    again = tmp_path / "again.pdf"
+    env = {**os.environ, "PYTHONPATH": str(ROOT), "PYTHONHASHSEED": "12345"}
+    r = subprocess.run(
+        [sys.executable, "-c", BUILD_SCRIPT, str(repo), str(again)],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=600,
+    )
+    assert r.returncode == 0, r.stderr[-3000:]
+    assert again.read_bytes() == pdf.read_bytes()
+    assert b"CreationDate" not in pdf.read_bytes()  # no timestamp in the file
+
+
+@pytest.mark.parametrize("_", [pytest.param(None, marks=NEEDS_RUN)])
+def test_every_page_renders(report, tmp_path, _):
+    _, pdf, _, _ = report
+    n = page_count(pdf)
+    r = render_pages(pdf, tmp_path / "png")
+    assert r.returncode == 0, r.stderr
+    assert r.stderr == "", r.stderr  # poppler reports any syntax problem on stderr
+    pngs = sorted((tmp_path / "png").glob("page-*.png"))
+    assert len(pngs) == n
+    assert all(p.stat().st_size > 1000 for p in pngs)
+
+
+@pytest.mark.parametrize("_", [pytest.param(None, marks=NEEDS_RUN)])
+def test_only_embedded_fonts(report, _):
+    if POPPLER["pdffonts"] is None:
+        pytest.skip("pdffonts not installed")
+    _, pdf, _, _ = report
+    r = _run(POPPLER["pdffonts"], str(pdf))
+    assert r.returncode == 0 and not r.stderr.strip(), r.stderr
+    fonts = [line.split() for line in r.stdout.splitlines()[2:] if line.strip()]
+    assert fonts
+    for f in fonts:
+        name = f[0].split("+")[-1]
+        assert name.startswith(EMBEDDED_FONTS), name
+        assert "yes" in f[-5:-2], f  # embedded (emb column)
+
+
+@pytest.mark.parametrize("_", [pytest.param(None, marks=NEEDS_RUN)])
+def test_section_titles_and_pages_match_the_html(report, _):
+    from pipeline.report.reproduction_html import render_html
+
+    doc, pdf, _, _ = report
+    expected = html_headings(render_html(doc))
+    # the HTML, the model and the PDF number the same sections the same way
+    assert expected == [(num, _norm(title)) for num, title, _ in R.section_titles(doc)]
+    assert len(expected) >= 3 * 5  # every paper has its summary, audit, numbers ... sections
+
+    pages = page_texts(pdf)
+    n = page_count(pdf)
+    assert len(pages) == n
+    # pages: title page, contents, then the body; the first heading is in both the contents
+    # and the body
+    first = f"{expected[0][0]} {expected[0][1]}"
+    where = [i for i, p in enumerate(pages) if first in p]
+    assert len(where) >= 2 and where[0] == 1, where
+    body_start = where[1]
+    body = pages[body_start:]
+    # every numbered title is in the body, in the HTML's order (compared without whitespace:
+    # a long title may break after a slash)
+    text, pos = "".join(body).replace(" ", ""), 0
+    for num, title in expected:
+        found = text.find(f"{num}{title}".replace(" ", ""), pos)
+        assert found >= 0, f"section {num} {title!r} not found in the PDF after offset {pos}"
+        pos = found + 1
+    # every top-level section starts a page (its title is the page's first text)
+    top = [f"{num} {title}" for num, title in expected if "." not in num]
+    starts = [
+        p for p in body if any(p.replace(" ", "").startswith(t.replace(" ", "")) for t in top)
+    ]
+    assert len(starts) == len(top)
+    # page count: front matter + at least one page per top-level section; the footer of the
+    # last page numbers the body pages ("k / k")
+    assert n >= body_start + len(top)
+    body_pages = n - body_start
+    assert pages[-1].endswith(f"{body_pages} / {body_pages}")
