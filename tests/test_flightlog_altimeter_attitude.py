@@ -96,6 +96,10 @@ def _write(tmp_path, frame, name="bad.csv"):
             r"altimeter_m must sample every n-th IMU row; inferred n = 2",
         ),
         (lambda f: f.assign(altimeter_m=np.nan), "altimeter_m has 0 samples"),
+        (
+            lambda f: f.assign(gyro_x_deg_s=f["gyro_x_deg_s"].where(f.index != 4, np.nan)),
+            r"column gyro_x_deg_s, data row 5: an empty cell is not a finite number",
+        ),
     ],
 )
 def test_malformed_logs_are_named(simulated, tmp_path, capsys, mutate, match):
@@ -107,6 +111,15 @@ def test_malformed_logs_are_named(simulated, tmp_path, capsys, mutate, match):
     assert flightlog.main([str(path), "--out", str(out)]) == 2
     assert "error:" in capsys.readouterr().err
     assert not out.exists()
+
+
+def test_empty_log_is_named(tmp_path, capsys):
+    path = tmp_path / "empty.csv"
+    path.write_text("", encoding="utf-8")
+    with pytest.raises(flightlog.FlightLogError, match="the file is empty"):
+        flightlog.read_log(path)
+    assert flightlog.main([str(path), "--out", str(tmp_path / "att.csv")]) == 2
+    assert "the file is empty" in capsys.readouterr().err
 
 
 @pytest.mark.parametrize(

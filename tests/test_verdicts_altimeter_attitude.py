@@ -17,7 +17,16 @@ from pipeline.columns import (
 FILTERS = ("linear_kf", "linear_kf_no_gamma", "ukf", "ekf", "gyro_only", "accel_leveling")
 
 
-def _results(tmp_path, lkf_roll=0.16, ukf_roll=0.40, nees=1.0, ekf_scale=1.0, norm=1e-6):
+def _results(
+    tmp_path,
+    lkf_roll=0.16,
+    ukf_roll=0.40,
+    nees=1.0,
+    ekf_scale=1.0,
+    norm=1e-6,
+    nees_curve=None,
+    gyro_curve=None,
+):
     rng = np.random.default_rng(0)
     n_runs = 50
     t = np.arange(0.0, 100.0, 0.2)
@@ -60,13 +69,16 @@ def _results(tmp_path, lkf_roll=0.16, ukf_roll=0.40, nees=1.0, ekf_scale=1.0, no
         if f == "accel_leveling":
             curve = np.where(load > 1, 30.0, 0.5)
         if f == "gyro_only":
-            curve = 0.2 * np.sqrt(t + 1)
+            # drift-dominated: grows linearly (fails the quarter test of a bounded error)
+            curve = 0.05 + 0.02 * t if gyro_curve is None else gyro_curve(t)
         if f == "ekf":
             curve = curve * np.where(t > 90, ekf_scale, 1.0)
         frame = pd.DataFrame({c: np.nan for c in TIMESERIES_COLUMNS}, index=range(len(t)))
         frame["t_s"], frame["filter"] = t, f
         frame["roll_rms_deg"], frame["pitch_rms_deg"] = curve, curve / 2
         frame["norm_error_rms"] = norm
+        if f != "accel_leveling":
+            frame["nees_roll"] = frame["nees_pitch"] = nees if nees_curve is None else nees_curve(t)
         series.append(frame)
     pd.DataFrame(summary, columns=RMS_SUMMARY_COLUMNS).to_csv(
         tmp_path / "rms_summary.csv", index=False
@@ -126,3 +138,30 @@ def test_missing_filter_is_named(published, tmp_path):
     s[s["filter"] != "ukf"].to_csv(d / "rms_summary.csv", index=False)
     with pytest.raises(ValueError, match="filter 'ukf' has no results"):
         verdicts.verdicts(published, d, 10.0)
+
+
+def test_sigma_consistency_looks_at_every_time(published, tmp_path):
+    """A flight-mean NEES of 1 hides an over-confident stretch: NEES 3 for 30 % of the flight
+    (and 0.14 elsewhere, mean 1.0) is not consistent; 3 for 5 % of it is."""
+
+    def stretch(share):
+        def curve(t):
+            bad = t >= t.max() * (1 - share)
+            return np.where(bad, 3.0, (1 - 3.0 * bad.mean()) / (1 - bad.mean()))
+
+        return curve
+
+    bad = _by_id(verdicts.verdicts(published, _results(tmp_path, nees_curve=stretch(0.3)), 10.0))
+    assert bad["C2.lkf_sigma_consistent"] == "not_upheld"
+    assert bad["C3.ukf_sigma_consistent"] == "not_upheld"
+    ok = _by_id(verdicts.verdicts(published, _results(tmp_path, nees_curve=stretch(0.05)), 10.0))
+    assert ok["C2.lkf_sigma_consistent"] == "upheld"
+
+
+def test_bounded_is_not_checkable_when_the_drifting_reference_passes_too(published, tmp_path):
+    flat = _by_id(
+        verdicts.verdicts(published, _results(tmp_path, gyro_curve=lambda t: 2.0 + 0 * t), 10.0)
+    )
+    assert flat["C4.lkf_error_bounded"] == "not_checkable"
+    growing = _by_id(verdicts.verdicts(published, _results(tmp_path), 10.0))
+    assert growing["C4.lkf_error_bounded"] == "upheld"

@@ -66,11 +66,20 @@ def _gyro_columns(frame: pd.DataFrame, path: Path) -> tuple[list[str], float]:
     )
 
 
+def _cell(value: object) -> str:
+    """A CSV cell as the user wrote it: an empty cell is named as such, not as ``nan``."""
+    if value is None or (isinstance(value, float) and np.isnan(value)):
+        return "an empty cell"
+    return repr(value.item() if isinstance(value, np.generic) else value)
+
+
 def read_log(path: str | Path) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, float, int]:
     """Parse and check a flight log: (t, gyro rad/s (n, 3), accel (n, 3), altimeter (n,), dt, every)."""
     path = Path(path)
     try:
         frame = pd.read_csv(path)
+    except pd.errors.EmptyDataError:
+        raise FlightLogError(f"{path}: the file is empty; need a header and IMU rows") from None
     except (OSError, pd.errors.ParserError, UnicodeDecodeError) as exc:
         raise FlightLogError(f"{path}: cannot read as CSV: {exc}") from None
     gyro_cols, scale = _gyro_columns(frame, path)
@@ -88,7 +97,7 @@ def read_log(path: str | Path) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.n
             bad = np.flatnonzero(~np.isfinite(values))
         if bad.size:
             raise FlightLogError(
-                f"{path}: column {col}, data row {bad[0] + 1}: {frame[col].iloc[bad[0]]!r} is not "
+                f"{path}: column {col}, data row {bad[0] + 1}: {_cell(frame[col].iloc[bad[0]])} is not "
                 "a finite number"
                 + (
                     " (leave altimeter_m empty where there is no sample)"
