@@ -4,6 +4,9 @@ Panel (1): the trajectory (or, for the stationary vehicle, the no-drift case);
 panels (2)-(4): position error against time for the channel-1, channel-3 and combined drift
 cases, with the three curves (proposed_analytic, proposed_simulated, strapdown) and the
 true-azimuth diagnostic (dashed) that shows which part of the error eqs. 33-36 model.
+The values the paper prints for a panel (``config/published/platform_drift.yaml``, by its
+``figure: "Fig. N (k)"``) are overlaid: the strapdown error at 2 h as a black diamond, the
+crossover time as a dotted vertical line.
 
 ``python -m pipeline.platform_drift.figures --results-dir results/platform_drift
 --out-dir results/platform_drift/figures``
@@ -13,7 +16,10 @@ from __future__ import annotations
 
 import argparse
 import io
+import re
+from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import Any
 
 import matplotlib
 
@@ -24,6 +30,7 @@ import pandas as pd  # noqa: E402
 
 from pipeline.atomic import write_bytes  # noqa: E402
 from pipeline.platform_drift.scenario import load_scenario  # noqa: E402
+from pipeline.platform_drift.verdicts import FINAL_S, load_published  # noqa: E402
 
 __all__ = ["FIGURES", "plot_scenario", "run"]
 
@@ -55,8 +62,33 @@ def _panel(ax, frame: pd.DataFrame, case: str, title: str) -> None:
     ax.grid(alpha=0.3)
 
 
-def plot_scenario(name: str, scenario_dir: Path, scenario_file: Path | None):
-    """The four-panel figure of one scenario."""
+def _published_marks(ax, items: Sequence[Mapping[str, Any]]) -> None:
+    """Overlay the paper's printed values of one panel (km and s, as the axes)."""
+    for item in items:
+        value = float(item["value"])
+        if item["quantity"] == "error_2h_m":
+            km = value * (1000.0 if item.get("unit") == "km" else 1.0) / 1000.0
+            ax.plot(
+                [FINAL_S], [km], "D", color="k", ms=7, mfc="none", mew=1.6, zorder=5,
+                label="published 2 h error (paper's text)",
+            )  # fmt: skip
+        elif item["quantity"] == "crossover_s":
+            ax.axvline(value, color="k", ls=":", lw=1.3, label="published crossover (paper's text)")
+
+
+def _panel_number(item: Mapping[str, Any]) -> tuple[int, int] | None:
+    m = re.match(r"Fig\. (\d+) \((\d)\)", str(item.get("figure", "")))
+    return (int(m.group(1)), int(m.group(2))) if m else None
+
+
+def plot_scenario(
+    name: str,
+    scenario_dir: Path,
+    scenario_file: Path | None,
+    published: Sequence[Mapping[str, Any]] = (),
+):
+    """The four-panel figure of one scenario; ``published``: the items of the published-values
+    file (those whose ``figure`` names this figure's number are overlaid on their panel)."""
     errors = pd.read_csv(scenario_dir / "errors.csv")
     diag_path = scenario_dir / "errors_diagnostic.csv"
     if diag_path.is_file():
@@ -83,11 +115,17 @@ def plot_scenario(name: str, scenario_dir: Path, scenario_file: Path | None):
         _panel(ax1, errors, "none", "(1) no error source")
     for ax, (case, text), k in zip(axes.flat[1:], CASES.items(), (2, 3, 4), strict=True):
         _panel(ax, errors, case, f"({k}) {text}")
-    handles, labels = axes[0, 1].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=9, frameon=False)
+        _published_marks(ax, [i for i in published if _panel_number(i) == (number, k)])
+    legend: dict[str, Any] = {}
+    for ax in axes.flat[1:]:
+        for handle, text in zip(*ax.get_legend_handles_labels(), strict=True):
+            legend.setdefault(text, handle)
+    fig.legend(
+        list(legend.values()), list(legend), loc="lower center", ncol=3, fontsize=9, frameon=False
+    )
     head = f"Fig. {number}" if number else "Figure"
     fig.suptitle(f"{head}: position error, proposed scheme vs strapdown, {label}", fontsize=12)
-    fig.tight_layout(rect=(0, 0.05, 1, 0.96))
+    fig.tight_layout(rect=(0, 0.08, 1, 0.96))
     return fig
 
 
@@ -98,13 +136,20 @@ def _png(fig) -> bytes:
     return buf.getvalue()
 
 
-def run(results_dir: str | Path, scenarios_dir: str | Path, out_dir: str | Path) -> list[Path]:
-    """Write fig<N>_<scenario>.png for every scenario directory with errors.csv."""
+def run(
+    results_dir: str | Path,
+    scenarios_dir: str | Path,
+    out_dir: str | Path,
+    published: str | Path | None = None,
+) -> list[Path]:
+    """Write fig<N>_<scenario>.png for every scenario directory with errors.csv, with the
+    published values of ``published`` (the platform-drift published-values file) overlaid."""
     results_dir, scenarios_dir, out_dir = Path(results_dir), Path(scenarios_dir), Path(out_dir)
+    items = load_published(published)["items"] if published is not None else []
     written = []
     for d in sorted(p for p in results_dir.iterdir() if (p / "errors.csv").is_file()):
         number, _ = FIGURES.get(d.name, (0, d.name))
-        fig = plot_scenario(d.name, d, scenarios_dir / f"{d.name}.yaml")
+        fig = plot_scenario(d.name, d, scenarios_dir / f"{d.name}.yaml", items)
         written.append(write_bytes(out_dir / f"fig{number}_{d.name}.png", _png(fig)))
     return written
 
@@ -114,8 +159,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--results-dir", default="results/platform_drift")
     ap.add_argument("--scenarios-dir", default="config/scenarios/platform_drift")
     ap.add_argument("--out-dir", default="results/platform_drift/figures")
+    ap.add_argument("--published", default="config/published/platform_drift.yaml")
     a = ap.parse_args(argv)
-    for p in run(a.results_dir, a.scenarios_dir, a.out_dir):
+    for p in run(a.results_dir, a.scenarios_dir, a.out_dir, a.published):
         print(p)
     return 0
 

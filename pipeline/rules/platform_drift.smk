@@ -121,6 +121,7 @@ rule platform_drift_verdicts:
 rule platform_drift_figures:
     input:
         "pipeline/platform_drift/figures.py",
+        published="config/published/platform_drift.yaml",
         errors=expand(f"{PD}/{{scenario}}/errors.csv", scenario=PD_SCENARIOS),
         diagnostic=expand(f"{PD}/{{scenario}}/errors_diagnostic.csv", scenario=PD_SCENARIOS),
     output:

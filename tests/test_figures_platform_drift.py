@@ -1,0 +1,58 @@
+"""Figs. 5-8 of platform_drift: the paper's printed values are drawn on the panels they describe."""
+
+from __future__ import annotations
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
+
+from pipeline.platform_drift.figures import CASES, STYLE, plot_scenario
+
+
+def _errors(path) -> None:
+    t = np.linspace(0.0, 7200.0, 73)
+    rows = []
+    for case in ["none", *CASES]:
+        for k, scheme in enumerate(STYLE):
+            rows += [{"t_s": x, "case": case, "scheme": scheme, "error_m": (k + 1) * x} for x in t]
+    pd.DataFrame(rows).to_csv(path / "errors.csv", index=False)
+
+
+def test_published_values_overlaid_on_their_panel(tmp_path):
+    _errors(tmp_path)
+    items = [
+        {"figure": "Fig. 5 (3)", "quantity": "error_2h_m", "value": "4.5", "unit": "km"},
+        {"figure": "Fig. 5 (4)", "quantity": "crossover_s", "value": "2400", "unit": "s"},
+        {
+            "figure": "Fig. 6 (3)",
+            "quantity": "error_2h_m",
+            "value": "99",
+            "unit": "km",
+        },  # not this one
+    ]
+    fig = plot_scenario("stationary", tmp_path, None, items)
+    try:
+        axes = fig.axes[:4]
+        assert "Fig. 5" in fig._suptitle.get_text()
+        panel3 = [ln for ln in axes[2].lines if ln.get_label().startswith("published")]
+        assert len(panel3) == 1
+        assert np.allclose(panel3[0].get_xydata(), [[7200.0, 4.5]])  # km on the km axis
+        panel4 = [ln for ln in axes[3].lines if ln.get_label().startswith("published")]
+        assert len(panel4) == 1 and np.allclose(panel4[0].get_xdata(), [2400.0, 2400.0])
+        for ax in (axes[0], axes[1]):
+            assert not [ln for ln in ax.lines if ln.get_label().startswith("published")]
+        legend = [t.get_text() for t in fig.legends[0].get_texts()]
+        assert "published 2 h error (paper's text)" in legend
+        assert "published crossover (paper's text)" in legend
+    finally:
+        plt.close(fig)
+
+
+def test_no_published_values_no_marks(tmp_path):
+    _errors(tmp_path)
+    fig = plot_scenario("stationary", tmp_path, None)
+    try:
+        for ax in fig.axes[:4]:
+            assert not [ln for ln in ax.lines if ln.get_label().startswith("published")]
+    finally:
+        plt.close(fig)
