@@ -376,6 +376,29 @@ def test_scoreboard_counts_equal_the_csv_counts(built):
         assert row.line.startswith("Full reproduction" if full else ("Partial", "Not"))
 
 
+def test_scoreboard_ids_link_to_their_rows(built):
+    """Every id the scoreboard names as not reproduced / not upheld / not checkable is a link to
+    the first table row of that id in its paper's section (the ids come from verdicts.csv)."""
+    board = built.html[built.html.index('id="scoreboard"') : built.html.index("</table>")]
+    links = re.findall(r'<a class="ref" href="#([^"]+)">([^<]+)</a>', board)
+    rows = dict(re.findall(r'<tr[^>]* id="(row-[^"]+)"><td[^>]*>(?:<[^>]+>)?([^<]*)', built.html))
+    expected = 0
+    for slug in SLUGS:
+        v = pd.read_csv(built.root / "results" / slug / "verdicts.csv", dtype=str,
+                        keep_default_na=False)  # fmt: skip
+        failing = v[~v["verdict"].isin(["reproduced", "consistent", "upheld"])]
+        base = {i.split("/")[0] for i in failing["id"]}
+        line = next(r.line for r in built.doc.scoreboard if r.slug == slug)
+        named = {b for b in base if re.search(rf"(?<![\w.]){re.escape(b)}(?![\w])", line)}
+        assert bool(named) == bool(base), slug  # the line names some (at most 5 per group)
+        mine = [(a, w) for a, w in links if a.startswith(f"row-{slug.replace('_', '-')}-")]
+        assert {w for _, w in mine} == named, slug
+        expected += len(named)
+        for anchor, word in mine:
+            assert rows[anchor].split("/")[0] == word, (anchor, rows[anchor])
+    assert len(links) == expected
+
+
 def test_line_names_the_failures():
     audit = pd.DataFrame({"equation": ["1", "2"], "status": ["match", "differs"],
                           "residual": ["0", "x"], "note": ["", ""]})  # fmt: skip
@@ -392,7 +415,12 @@ def test_line_names_the_failures():
 
     line = rescience_line(audit, verdicts)
     assert line.startswith("Partial reproduction: 1 of 2 published numbers")
-    assert "A2 (outside the Monte Carlo tolerance)" in line and "not upheld: C1" in line
+    assert "A2 (outside the Monte Carlo tolerance; ours 2x the published)" in line
+    near = verdicts.assign(reproduced=["1", "1.004", "e", "e"])
+    assert "A2 (outside the Monte Carlo tolerance; ours +0.4 % off the published)" in (
+        rescience_line(audit, near)
+    )
+    assert "not upheld: C1" in line
     assert "1 of 2 printed equations differ" in line
     good = verdicts.assign(verdict=["reproduced", "consistent", "upheld", "upheld"])
     assert rescience_line(audit, good).startswith("Full reproduction")

@@ -638,13 +638,41 @@ _NOT_REPRODUCED_WHY = {
 }
 
 
+def _number(text: object) -> float | None:
+    try:
+        value = float(str(text).strip())
+    except ValueError:
+        return None
+    return value if math.isfinite(value) else None
+
+
+def _ratio_range(rows: pd.DataFrame) -> str:
+    """How far ours is from the published value over rows where both are numbers (published
+    non-zero): ``"2.7\u20136.7x"`` when every ratio is at least 2 or at most 1/2, else the
+    relative difference, ``"+0.01 to +0.5 % off"``; ``""`` if no row has two numbers."""
+    ratios = []
+    for pub, ours in zip(rows["published"], rows["reproduced"], strict=True):
+        a, b = _number(pub), _number(ours)
+        if a is not None and b is not None and a != 0:
+            ratios.append(b / a)
+    if not ratios:
+        return ""
+    lo, hi = min(ratios), max(ratios)
+    if lo >= 2 or hi <= 0.5:
+        span = f"{lo:.2g}" if f"{lo:.2g}" == f"{hi:.2g}" else f"{lo:.2g}\u2013{hi:.2g}"
+        return f"ours {span}x the published"
+    d_lo, d_hi = 100 * (lo - 1), 100 * (hi - 1)
+    span = f"{d_lo:+.2g}" if f"{d_lo:+.2g}" == f"{d_hi:+.2g}" else f"{d_lo:+.2g} to {d_hi:+.2g}"
+    return f"ours {span} % off the published"
+
+
 def rescience_line(audit: pd.DataFrame, verdicts: pd.DataFrame) -> str:
     """The ReScience-style one-line verdict of a paper, filled from the CSVs.
 
     Full reproduction: every published number reproduced or consistent and every claim
     upheld; not reproduced: none of them; partial otherwise. The reasons name the
-    numbers not reproduced (by kind), the claims not upheld or not checkable, and the
-    printed equations that differ from the derivation.
+    numbers not reproduced (by kind, with the range of ours / published), the claims not
+    upheld or not checkable, and the printed equations that differ from the derivation.
     """
     numbers = verdicts[verdicts["kind"] != "claim"]
     claims = verdicts[verdicts["kind"] == "claim"]
@@ -672,6 +700,9 @@ def rescience_line(audit: pd.DataFrame, verdicts: pd.DataFrame) -> str:
             groups = []
             for kind, g in bad.groupby("kind", sort=False):
                 why = _NOT_REPRODUCED_WHY.get(str(kind), f"{kind} values")
+                spread = _ratio_range(g)
+                if spread:
+                    why += f"; {spread}"
                 groups.append(f"{_compact_ids(list(g['id']))} ({why})")
             text += "; not reproduced: " + "; ".join(groups)
         parts.append(text)

@@ -16,6 +16,7 @@ import html.entities
 import os
 import re
 from collections.abc import Sequence
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from pipeline.atomic import write_text
@@ -85,6 +86,8 @@ table.scoreboard tr.line td strong.partial { color: #8a5a00; }
 table.scoreboard tr.line td strong.none { color: #a3261a; }
 table.scoreboard ul.reasons { margin: 0.15em 0 0.1em 0; padding-left: 1.3em; }
 table.scoreboard ul.reasons li { margin: 0.05em 0; }
+table.scoreboard a.ref { font-family: ui-monospace, monospace; font-size: 0.92em; }
+tr:target > td { background: #fff4c2; }
 p.legend { font-size: 0.85em; color: #444; }
 nav.toc { background: #f7f8fa; border: 1px solid #ddd; padding: 0.4em 1em; margin: 1em 0; }
 nav.toc h2 { border: none; margin: 0.3em 0; font-size: 1.2em; }
@@ -145,8 +148,40 @@ _NUM_ATTR = ' class="num"'
 _NUMERIC = re.compile(r"^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?$")
 
 
-def _table(t: Table) -> str:
+@dataclass
+class _Anchors:
+    """Row anchors handed out while rendering: an element id for the first row of each published
+    item or claim (a table whose first column is ``id``) and each audited equation of a paper;
+    ``rows`` maps a paper's item/claim ids to theirs, so the scoreboard can link the ids it
+    names (equations are not linked from there: its sentences are full of other numbers)."""
+
+    papers: set[str]
+    paper: str = ""
+    rows: dict[str, dict[str, str]] = field(default_factory=dict)
+    used: set[str] = field(default_factory=set)
+
+    def claim(self, kind: str, key: str) -> str | None:
+        """A fresh element id for ``key`` (None outside a paper or if ``key`` has one)."""
+        if not self.paper or not key:
+            return None
+        anchor = f"{kind}-{H.slugify(self.paper)}-{H.slugify(key)}"
+        if anchor in self.used:
+            return None
+        self.used.add(anchor)
+        if kind == "row":  # "F5.3.crossover/proposed_simulated" is also "F5.3.crossover"
+            table = self.rows.setdefault(self.paper, {})
+            table.setdefault(key, anchor)
+            table.setdefault(key.split("/")[0], anchor)
+        return anchor
+
+
+def _id_attr(anchor: str | None) -> str:
+    return f' id="{H.escape(anchor)}"' if anchor else ""
+
+
+def _table(t: Table, anchors: _Anchors | None = None) -> str:
     hl = set(t.highlight)
+    keyed = anchors is not None and bool(t.columns) and t.columns[0] == "id"
     parts = ['<div class="scroll"><table class="data">\n']
     if t.caption:
         parts.append(f"<caption>{H.escape(t.caption)}</caption>\n")
@@ -159,6 +194,8 @@ def _table(t: Table) -> str:
     parts.append("<tbody>\n")
     for i, row in enumerate(t.rows):
         cls = ' class="bad"' if i in hl else ""
+        if keyed and row:
+            cls += _id_attr(anchors.claim("row", row[0].strip()))
         cells = "".join(
             f"<td{_NUM_ATTR if _NUMERIC.match(c.strip()) else ''}>{_cell(c)}</td>" for c in row
         )
@@ -193,7 +230,7 @@ def _math(mathml: str | None) -> str:
     return ""
 
 
-def _equation_row(r: EquationRow) -> str:
+def _equation_row(r: EquationRow, anchors: _Anchors | None = None) -> str:
     residual = ""
     if r.status != "match":
         if r.residual_mathml:
@@ -204,7 +241,8 @@ def _equation_row(r: EquationRow) -> str:
         residual = f'<code class="res">{H.escape(r.residual_text)}</code>'
     note = f'<p class="note">{H.escape(r.note)}</p>' if r.note else ""
     return (
-        f'<tr class="{H.css_class(r.status)}">'
+        f'<tr class="{H.css_class(r.status)}"'
+        f"{_id_attr(anchors.claim('eq', r.equation) if anchors else None)}>"
         f'<td class="eq">({H.escape(r.equation)})</td>'
         f'<td><span class="{H.css_class(r.status)}">{H.escape(_words(r.status))}</span></td>'
         f'<td class="math">{_math(r.printed_mathml)}</td>'
@@ -217,13 +255,13 @@ def _words(word: str) -> str:
     return word.replace("_", " ")
 
 
-def _equation_table(t: EquationTable) -> str:
+def _equation_table(t: EquationTable, anchors: _Anchors | None = None) -> str:
     head = "".join(
         f"<th>{c}</th>"
         for c in ("eq.", "status", "printed", "derived", "residual (printed − derived); note")
     )
     cap = f"<caption>{H.escape(t.caption)}</caption>\n" if t.caption else ""
-    rows = "".join(_equation_row(r) for r in t.rows)
+    rows = "".join(_equation_row(r, anchors) for r in t.rows)
     return (
         f'<div class="scroll"><table class="data equations">\n{cap}'
         f"<thead><tr>{head}</tr></thead>\n<tbody>\n{rows}</tbody>\n</table></div>\n"
@@ -241,25 +279,29 @@ def _figure(f: Figure) -> str:
     )
 
 
-def _block(b: Block) -> str:
+def _block(b: Block, anchors: _Anchors | None = None) -> str:
     if isinstance(b, Paragraph):
         return H.paragraph(b.text)
     if isinstance(b, Table):
-        return _table(b)
+        return _table(b, anchors)
     if isinstance(b, Figure):
         return _figure(b)
     if isinstance(b, EquationTable):
-        return _equation_table(b)
+        return _equation_table(b, anchors)
     if isinstance(b, Link):
         return f'<p class="link"><a href="{H.escape(b.target)}">{H.escape(b.text)}</a></p>\n'
     raise TypeError(f"unknown block type {type(b).__name__}")
 
 
-def _section(s: Section, numbers: dict[str, str], level: int) -> str:
+def _section(
+    s: Section, numbers: dict[str, str], level: int, anchors: _Anchors | None = None
+) -> str:
     h = min(level, 6)
     num = numbers.get(s.id, "")
-    body = "".join(_block(b) for b in s.blocks)
-    body += "".join(_section(c, numbers, level + 1) for c in s.subsections)
+    if anchors is not None and level == 2:  # a top-level section: a paper's, or not
+        anchors.paper = s.id if s.id in anchors.papers else ""
+    body = "".join(_block(b, anchors) for b in s.blocks)
+    body += "".join(_section(c, numbers, level + 1, anchors) for c in s.subsections)
     return (
         f'<section id="{H.escape(s.id)}">\n'
         f'<h{h}><a href="#{H.escape(s.id)}"><span class="secno">{num}</span>'
@@ -287,7 +329,29 @@ _TONE = {
 _SHORT = {"not_checkable": "not checkable", "not_reproduced": "not reproduced"}
 
 
-def _scoreboard(rows: Sequence[ScoreRow], numbers: dict[str, str] | None = None) -> str:
+_TOKEN = re.compile(r"[A-Za-z0-9_.]+")
+
+
+def _linked(text: str, targets: dict[str, str]) -> str:
+    """``text`` escaped, each whole word that is a key of ``targets`` linked to its anchor."""
+    out, pos = [], 0
+    for m in _TOKEN.finditer(text):
+        word = m.group(0).rstrip(".")
+        anchor = targets.get(word)
+        if anchor is None:
+            continue
+        out.append(H.escape(text[pos : m.start()]))
+        out.append(f'<a class="ref" href="#{H.escape(anchor)}">{H.escape(word)}</a>')
+        pos = m.start() + len(word)
+    out.append(H.escape(text[pos:]))
+    return "".join(out)
+
+
+def _scoreboard(
+    rows: Sequence[ScoreRow],
+    numbers: dict[str, str] | None = None,
+    anchors: _Anchors | None = None,
+) -> str:
     n_cols = 1 + sum(len(w) for _, _, w in _GROUPS)
     groups = "".join(
         f'<th colspan="{len(words)}" class="first">{H.escape(name)}</th>'
@@ -339,7 +403,8 @@ def _scoreboard(rows: Sequence[ScoreRow], numbers: dict[str, str] | None = None)
         warn = f" (unexpected words: {H.escape(', '.join(extra))})" if extra else ""
         # one reason per line: the line's sentences end with ". " (ids have no spaces)
         reasons = [x.strip() for x in re.split(r"(?<=\.)\s+", rest.strip()) if x.strip()]
-        items = "".join(f"<li>{H.escape(x)}</li>" for x in reasons)
+        targets = anchors.rows.get(r.slug, {}) if anchors is not None else {}
+        items = "".join(f"<li>{_linked(x, targets)}</li>" for x in reasons)
         body.append(
             f'<tr class="line"><td colspan="{n_cols}"><strong class="{tone}">'
             f"{H.escape(status)}</strong>{warn} "
@@ -373,6 +438,9 @@ def _toc(sections: Sequence[Section], numbers: dict[str, str], depth: int = 2) -
 def render_html(doc: Document) -> str:
     """The whole report as one self-contained HTML document (a ``str``)."""
     numbers = section_numbers(doc.sections)
+    # the sections first: they hand out the row anchors the scoreboard links to
+    anchors = _Anchors(papers={r.slug for r in doc.scoreboard})
+    sections = "".join(_section(s, numbers, 2, anchors) for s in doc.sections)
     body = (
         '<header class="title">\n'
         f"<h1>{H.escape(doc.title)}</h1>\n"
@@ -380,7 +448,7 @@ def render_html(doc: Document) -> str:
         f'<p class="generated">Generated from the workflow\'s results at git describe '
         f"<code>{H.escape(doc.generated_from)}</code>.</p>\n</header>\n"
     )
-    body += _scoreboard(doc.scoreboard, numbers)
+    body += _scoreboard(doc.scoreboard, numbers, anchors)
     body += (
         '<p class="legend">Each number counts rows of the paper\'s equation_audit.csv or '
         "verdicts.csv. Green: the paper and this reproduction agree (a printed equation matches "
@@ -392,7 +460,7 @@ def render_html(doc: Document) -> str:
         "this report</a>.</p>\n"
     )
     body += _toc(doc.sections, numbers)
-    body += "".join(_section(s, numbers, 2) for s in doc.sections)
+    body += sections
     return H.page(doc.title, body, css=CSS)
 
 
