@@ -192,8 +192,14 @@ def test_figure_names_match_the_workflow():
 
 
 def test_write_all_writes_valid_non_blank_pngs(written):
-    assert [p.name for p in written] == F.FIGURES
-    for path in written:
+    # each figure as PNG (the pages) and SVG (the PDF report's vector twin)
+    assert [p.name for p in written] == [
+        n.replace(".png", ext) for n in F.FIGURES for ext in (".png", ".svg")
+    ]
+    for svg in written[1::2]:
+        head = svg.read_bytes()[:400]
+        assert b"<svg" in head and b"<dc:date>" not in svg.read_bytes(), svg
+    for path in written[0::2]:
         assert path.is_file()
         img = mpimg.imread(path)
         assert img.ndim == 3 and img.shape[0] >= 500 and img.shape[1] >= 1000, (path, img.shape)
@@ -207,9 +213,10 @@ def test_writing_twice_is_byte_identical(written, scenario_dir, tmp_path):
     published = str(ROOT / "config/published/altimeter_attitude.yaml")
     argv = ["--scenario-dir", str(scenario_dir), "--out-dir", str(tmp_path)]
     assert F.main([*argv, "--published", published, "--figures", *names]) == 0
-    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(names)
+    both = [n.replace(".png", ext) for n in names for ext in (".png", ".svg")]
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(both)
     by_name = {p.name: p for p in written}
-    for name in names:
+    for name in both:
         assert (tmp_path / name).read_bytes() == by_name[name].read_bytes(), name
 
 
@@ -417,6 +424,7 @@ def test_sweep_figure_maps_the_sweep_rows(tmp_path):
 
 def test_snakemake_script_writes_exactly_its_outputs(scenario_dir, tmp_path):
     names = ["fig2_third_row.png", "fig7_lkf_rms_error.png"]
+    names += [n.replace(".png", ".svg") for n in names]
     out = [str(tmp_path / "figures" / n) for n in names]
     log = tmp_path / "figures.log"
     snakemake = SimpleNamespace(

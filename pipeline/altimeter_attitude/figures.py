@@ -25,7 +25,6 @@ CLI::
 from __future__ import annotations
 
 import argparse
-import io
 import json
 import math
 import sys
@@ -49,7 +48,6 @@ from matplotlib.ticker import (  # noqa: E402
 )
 
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
-from pipeline.atomic import write_bytes  # noqa: E402
 from pipeline.columns import (  # noqa: E402
     ALTIMETER_FILTERS,
     RMS_SUMMARY_COLUMNS,
@@ -57,6 +55,7 @@ from pipeline.columns import (  # noqa: E402
     TIMESERIES_COLUMNS,
     TRUTH_COLUMNS,
 )
+from pipeline.figure_files import write_png_svg  # noqa: E402
 
 __all__ = [
     "FIGURES",
@@ -696,12 +695,6 @@ def sweep_figure(
 # writing
 
 
-def _png(fig: Figure) -> bytes:
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=DPI, metadata={"Software": None})
-    return buf.getvalue()
-
-
 def _read_optional_summary(scenario_dir: Path) -> pd.DataFrame | None:
     path = scenario_dir / "rms_summary.csv"
     if not path.is_file():
@@ -770,7 +763,8 @@ def write_all(
     published: dict | None,
     names: Sequence[str] | None = None,
 ) -> list[Path]:
-    """Write the scenario figures (``names``, default all of FIGURES) into ``out_dir``.
+    """Write the scenario figures (``names``, PNG file names, default all of FIGURES) into
+    ``out_dir``, each as PNG and SVG; returns the paths written (PNG, SVG per figure).
 
     Reads ``truth.csv`` and ``timeseries.csv`` of ``scenario_dir`` (and, when present,
     ``rms_summary.csv`` for the summary RMS in the legends of Figs 7/12 and
@@ -788,12 +782,12 @@ def write_all(
     summary = _read_optional_summary(scenario_dir)
     scenario, n_runs = _context(scenario_dir, summary)
     makers = _figure_makers(truth, ts, published, summary, scenario, n_runs)
-    return [write_bytes(out_dir / name, _png(makers[name]())) for name in names]
+    return [p for name in names for p in write_png_svg(makers[name](), out_dir / name, DPI)]
 
 
 def write_sweep(sweep_csv: Path, out_png: Path, published: dict | None) -> Path:
-    """Write the sweep figure of ``sweep.csv`` to ``out_png``."""
-    return write_bytes(out_png, _png(sweep_figure(pd.read_csv(sweep_csv), published)))
+    """Write the sweep figure of ``sweep.csv`` to ``out_png`` (and its SVG beside it)."""
+    return write_png_svg(sweep_figure(pd.read_csv(sweep_csv), published), out_png, DPI)[0]
 
 
 def main(argv: list[str] | None = None) -> int:

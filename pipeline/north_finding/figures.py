@@ -36,7 +36,6 @@ if "snakemake" in globals():  # run by Snakemake's script: directive from the re
     _sys.path.insert(0, _os.getcwd())
 
 import argparse
-import io
 import json
 import re
 from collections.abc import Mapping, Sequence
@@ -53,6 +52,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
+from pipeline import figure_files
 from pipeline.columns import (
     AZIMUTH_METHODS,
     ESTIMATE_COLUMNS,
@@ -61,7 +61,6 @@ from pipeline.columns import (
     QUANTITIES,
     SENSITIVITY_COLUMNS,
 )
-from pipeline.report.html import write_atomic
 
 __all__ = [
     "FIGURES",
@@ -78,17 +77,12 @@ __all__ = [
     "published_error_pct",
     "read_provenance",
     "real_abs_error_pct",
-    "render_png_svg",
     "run",
     "run_from_snakemake",
 ]
 
 DPI = 150
-#: Fixed salt for SVG element ids, so SVGs are byte-identical across runs.
-SVG_HASHSALT = "north_finding"
 RC = {
-    "svg.hashsalt": SVG_HASHSALT,
-    "svg.fonttype": "path",
     "font.size": 10,
     "axes.titlesize": 10.5,
     "axes.labelsize": 10,
@@ -101,8 +95,6 @@ RC = {
     "grid.alpha": 0.25,
     "grid.linewidth": 0.6,
 }
-#: Matplotlib ``savefig`` metadata per format: no dates, no software stamp.
-METADATA = {"png": {"Software": None}, "svg": {"Date": None, "Creator": None}}
 
 PUBLISHED_ITEM_FIELDS = (
     "id",
@@ -600,21 +592,8 @@ def plot_sensitivity_figure(
     return fig
 
 
-def render_png_svg(fig: Figure) -> dict[str, bytes]:
-    """Render a figure to ``{"png": bytes, "svg": bytes}`` deterministically."""
-    out: dict[str, bytes] = {}
-    with matplotlib.rc_context({"svg.hashsalt": SVG_HASHSALT}):
-        for fmt in ("png", "svg"):
-            buf = io.BytesIO()
-            fig.savefig(buf, format=fmt, dpi=DPI, metadata=METADATA[fmt])
-            out[fmt] = buf.getvalue()
-    return out
-
-
 def _write_figure(fig: Figure, out_dir: Path, stem: str) -> list[Path]:
-    return [
-        write_atomic(out_dir / f"{stem}.{fmt}", data) for fmt, data in render_png_svg(fig).items()
-    ]
+    return figure_files.write_png_svg(fig, out_dir / f"{stem}.png", DPI)
 
 
 # --------------------------------------------------------------------------- entry points

@@ -15,7 +15,6 @@ crossover time as a dotted vertical line.
 from __future__ import annotations
 
 import argparse
-import io
 import re
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -28,12 +27,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
-from pipeline.atomic import write_bytes  # noqa: E402
+from pipeline.figure_files import write_png_svg  # noqa: E402
 from pipeline.platform_drift.scenario import load_scenario  # noqa: E402
 from pipeline.platform_drift.verdicts import FINAL_S, load_published  # noqa: E402
 
 __all__ = ["FIGURES", "plot_scenario", "run"]
 
+DPI = 130
 FIGURES = {
     "stationary": (5, "stationary vehicle"),
     "latitude_change": (6, "large latitude change"),
@@ -129,11 +129,11 @@ def plot_scenario(
     return fig
 
 
-def _png(fig) -> bytes:
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=130, metadata={"Software": None})
-    plt.close(fig)
-    return buf.getvalue()
+def _write(fig, png_path: Path) -> list[Path]:
+    try:
+        return write_png_svg(fig, png_path, DPI)
+    finally:
+        plt.close(fig)
 
 
 def run(
@@ -142,15 +142,16 @@ def run(
     out_dir: str | Path,
     published: str | Path | None = None,
 ) -> list[Path]:
-    """Write fig<N>_<scenario>.png for every scenario directory with errors.csv, with the
-    published values of ``published`` (the platform-drift published-values file) overlaid."""
+    """Write fig<N>_<scenario>.png (and .svg) for every scenario directory with errors.csv,
+    with the published values of ``published`` (the platform-drift published-values file)
+    overlaid; returns the PNG paths."""
     results_dir, scenarios_dir, out_dir = Path(results_dir), Path(scenarios_dir), Path(out_dir)
     items = load_published(published)["items"] if published is not None else []
     written = []
     for d in sorted(p for p in results_dir.iterdir() if (p / "errors.csv").is_file()):
         number, _ = FIGURES.get(d.name, (0, d.name))
         fig = plot_scenario(d.name, d, scenarios_dir / f"{d.name}.yaml", items)
-        written.append(write_bytes(out_dir / f"fig{number}_{d.name}.png", _png(fig)))
+        written.append(_write(fig, out_dir / f"fig{number}_{d.name}.png")[0])
     return written
 
 

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
-import io
 from pathlib import Path
 
 import matplotlib
@@ -21,8 +20,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
-from pipeline.atomic import write_bytes, write_csv  # noqa: E402
-from pipeline.platform_drift.figures import STYLE  # noqa: E402
+from pipeline.atomic import write_csv  # noqa: E402
+from pipeline.figure_files import write_png_svg  # noqa: E402
+from pipeline.platform_drift.figures import DPI, STYLE  # noqa: E402
 from pipeline.platform_drift.run import simulate_errors  # noqa: E402
 from pipeline.platform_drift.scenario import load_scenario  # noqa: E402
 
@@ -51,7 +51,9 @@ def sweep(scenario: str | Path, latitudes=LATITUDES_DEG, log=print) -> pd.DataFr
     return pd.DataFrame(rows, columns=SWEEP_COLUMNS)
 
 
-def plot(frame: pd.DataFrame) -> bytes:
+def plot(frame: pd.DataFrame, png_path: str | Path) -> list[Path]:
+    """Fig. 9 (not in the paper) of the latitude sweep, written to ``png_path`` and the SVG
+    beside it; returns both paths."""
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
     titles = {"ch1": "channel-1 drift 0.01 deg/h", "ch3": "channel-3 drift 0.1 deg/h"}
     for ax, case in zip(axes, CASES, strict=True):
@@ -69,10 +71,10 @@ def plot(frame: pd.DataFrame) -> bytes:
         "Fig. 9 (not in the paper): error at 2 h against latitude, vehicle at rest", fontsize=12
     )
     fig.tight_layout(rect=(0, 0.08, 1, 0.94))
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=130, metadata={"Software": None})
-    plt.close(fig)
-    return buf.getvalue()
+    try:
+        return write_png_svg(fig, png_path, DPI)
+    finally:
+        plt.close(fig)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -83,7 +85,7 @@ def main(argv: list[str] | None = None) -> int:
     a = ap.parse_args(argv)
     frame = sweep(a.scenario)
     write_csv(a.out_csv, frame, SWEEP_COLUMNS)
-    write_bytes(a.out_png, plot(frame))
+    plot(frame, a.out_png)
     return 0
 
 

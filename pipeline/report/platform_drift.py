@@ -107,7 +107,9 @@ def render_page(
             alt=f"Fig. {number}",
             caption=f"Fig. {number} ({label}): position error of the proposed scheme (analytic "
             "and simulated) and of the strapdown INS; dashed: the proposed scheme with the true "
-            "azimuth rate in eq. 16 (the part of the error eqs. 33-36 model).",
+            "azimuth rate in eq. 16 (the part of the error eqs. 33-36 model); black diamond "
+            "and dotted line: the 2 h strapdown error and the crossover time the paper's text "
+            "gives for that panel (config/published/platform_drift.yaml).",
             missing_text=f"Fig. {number} not available",
         )
     figs += H.figure(

@@ -141,6 +141,8 @@ rule altimeter_attitude_figures:
             tagged_figure(f"{AA}/figures/{f}", "altimeter_attitude", AA_PAPER_FIGURES)
             for f in AA_FIGURES
         ],
+        # the vector twins the PDF report typesets
+        [f"{AA}/figures/{Path(f).stem}.svg" for f in AA_FIGURES],
     log:
         f"{AA}/logs/figures.log",
     benchmark:
@@ -158,6 +160,7 @@ rule altimeter_attitude_sweep_figure:
         published="config/published/altimeter_attitude.yaml",
     output:
         tagged_figure(f"{AA}/figures/{AA_SWEEP_FIGURE}", "altimeter_attitude", AA_PAPER_FIGURES),
+        f"{AA}/figures/{Path(AA_SWEEP_FIGURE).stem}.svg",
     log:
         f"{AA}/logs/sweep_figure.log",
     benchmark:

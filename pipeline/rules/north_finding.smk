@@ -123,6 +123,8 @@ rule north_finding_figures:
         provenance=f"{NF}/{NF_PUBLISHED_SCENARIO}/provenance.json",
     output:
         [tagged_figure(f"{NF}/figures/{f}", "north_finding", NF_PAPER_FIGURES) for f in NF_FIGURES],
+        # the vector twins the PDF report typesets
+        [f"{NF}/figures/{Path(f).stem}.svg" for f in NF_FIGURES],
     log:
         f"{NF}/logs/figures.log",
     benchmark:

@@ -126,6 +126,8 @@ rule platform_drift_figures:
         diagnostic=expand(f"{PD}/{{scenario}}/errors_diagnostic.csv", scenario=PD_SCENARIOS),
     output:
         [tagged_figure(f"{PD}/figures/{f}", "platform_drift", PD_PAPER_FIGURES) for f in PD_FIGURES],
+        # the vector twins the PDF report typesets
+        [f"{PD}/figures/{Path(f).stem}.svg" for f in PD_FIGURES],
     log:
         f"{PD}/logs/figures.log",
     benchmark:
@@ -166,6 +168,7 @@ rule platform_drift_latitude_sweep:
     output:
         csv=f"{PD}/latitude_sweep.csv",
         png=tagged_figure(f"{PD}/figures/fig9_latitude.png", "platform_drift", PD_PAPER_FIGURES),
+        svg=f"{PD}/figures/fig9_latitude.svg",
     log:
         f"{PD}/logs/latitude_sweep.log",
     benchmark:

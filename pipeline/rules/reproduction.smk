@@ -19,6 +19,8 @@ REPRODUCTION_FIGURES = (
     + [f"{PD}/figures/{f}" for f in PD_FIGURES + ["fig9_latitude.png"]]
     + [f"{AA}/figures/{f}" for f in AA_FIGURES + [AA_SWEEP_FIGURE]]
 )
+# the PDF typesets the SVG beside each PNG
+REPRODUCTION_SVG = [str(Path(f).with_suffix(".svg")) for f in REPRODUCTION_FIGURES]
 REPRODUCTION_PROVENANCE = (
     expand(f"{NF}/{{scenario}}/provenance.json", scenario=NF_SCENARIOS)
     + expand(f"{PD}/{{scenario}}/provenance.json", scenario=PD_SCENARIOS)
@@ -72,6 +74,7 @@ rule reproduction_pdf:
     input:
         REPRODUCTION_PDF_CODE,
         COMMON_CODE,
+        REPRODUCTION_SVG,
         **REPRODUCTION_INPUTS,
     output:
         tagged(f"{REPORTS}/reproduction.pdf", "reproduction", "Reports", "reproduction"),

@@ -22,5 +22,9 @@ with open(snakemake.log[0], "w") as log:
         )
     published = published_rms(load_yaml(snakemake.input.published))
     print(f"published RMS values: {published}", file=log)
-    for path in write_all(scenario_dir, out_dir, published, names=[p.name for p in outputs]):
+    pngs = [p.name for p in outputs if p.suffix == ".png"]
+    written = write_all(scenario_dir, out_dir, published, names=pngs)  # PNG and SVG each
+    if sorted(written) != sorted(outputs):
+        raise ValueError(f"wrote {sorted(map(str, written))}, outputs {sorted(map(str, outputs))}")
+    for path in written:
         print(path, file=log)

@@ -1,0 +1,53 @@
+"""Figure files: one Matplotlib figure written as PNG (raster, shown inline by the HTML pages)
+and as SVG beside it (vector, typeset by the PDF report, which takes the SVG of a PNG when there
+is one, so printed figures are sharp at any size).
+
+Both are byte-identical across runs: no date or software stamp, a fixed ``svg.hashsalt`` for
+the SVG element ids, text drawn as paths (no font needed to show the SVG). Files are written
+atomically (:mod:`pipeline.atomic`).
+
+>>> from matplotlib.figure import Figure
+>>> fig = Figure(figsize=(2, 1)); _ = fig.add_subplot().plot([0, 1], [1, 0])
+>>> a, b = render(fig, dpi=50), render(fig, dpi=50)
+>>> a == b, a["png"][:4] == b"\\x89PNG", b"<svg" in a["svg"]
+(True, True, True)
+"""
+
+from __future__ import annotations
+
+import io
+from pathlib import Path
+
+import matplotlib
+
+from pipeline.atomic import write_bytes
+
+__all__ = ["METADATA", "SVG_HASHSALT", "render", "write_png_svg"]
+
+#: Fixed salt for the ids of SVG elements (Matplotlib draws them at random otherwise).
+SVG_HASHSALT = "inertial-repro"
+#: ``savefig`` metadata per format: no dates, no software stamp.
+METADATA = {"png": {"Software": None}, "svg": {"Date": None, "Creator": None}}
+
+
+def render(fig, dpi: float, salt: str = SVG_HASHSALT) -> dict[str, bytes]:
+    """``{"png": bytes, "svg": bytes}`` of ``fig`` (a Matplotlib figure), deterministically."""
+    out: dict[str, bytes] = {}
+    with matplotlib.rc_context({"svg.hashsalt": salt, "svg.fonttype": "path"}):
+        for fmt in ("png", "svg"):
+            buf = io.BytesIO()
+            fig.savefig(buf, format=fmt, dpi=dpi, metadata=METADATA[fmt])
+            out[fmt] = buf.getvalue()
+    return out
+
+
+def write_png_svg(fig, png_path: str | Path, dpi: float) -> list[Path]:
+    """Write ``png_path`` and the SVG beside it (same stem); returns both paths."""
+    png_path = Path(png_path)
+    if png_path.suffix != ".png":
+        raise ValueError(f"figure path {str(png_path)!r} must end in .png (the SVG goes beside it)")
+    data = render(fig, dpi)
+    return [
+        write_bytes(png_path, data["png"]),
+        write_bytes(png_path.with_suffix(".svg"), data["svg"]),
+    ]
