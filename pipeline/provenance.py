@@ -14,12 +14,12 @@ ROOT = Path(__file__).resolve().parents[1]
 PACKAGES = ("numpy", "scipy", "sympy", "pandas", "matplotlib", "snakemake", "jsonschema", "pyyaml")
 
 
-def git_describe() -> str:
-    """``git describe --always --dirty --tags`` of the repository, or 'unknown'."""
+def git_describe(root: Path = ROOT) -> str:
+    """``git describe --always --dirty --tags`` of the repository at ``root``, or 'unknown'."""
     try:
         out = subprocess.run(
             ["git", "describe", "--always", "--dirty", "--tags"],
-            cwd=ROOT,
+            cwd=root,
             capture_output=True,
             text=True,
             check=True,

@@ -15,7 +15,6 @@ import importlib
 import json
 import math
 import re
-import subprocess
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from html.parser import HTMLParser
@@ -26,6 +25,7 @@ import pandas as pd
 import yaml
 
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
+from pipeline.provenance import git_describe
 
 __all__ = [
     "Block",
@@ -239,7 +239,7 @@ def build_document(
             "Every printed equation, published number and claim beside what this project "
             "derived with SymPy and computed: a reproducibility audit"
         ),
-        generated_from=_git_describe(root),
+        generated_from=git_describe(root),
         scoreboard=scoreboard,
         sections=sections,
     )
@@ -272,21 +272,6 @@ def _read_text_csv(path: Path, columns: Sequence[str]) -> pd.DataFrame:
     if missing:
         raise ValueError(f"{path}: missing columns {missing} (has {list(df.columns)})")
     return df[list(columns)]
-
-
-def _git_describe(root: Path) -> str:
-    try:
-        out = subprocess.run(
-            ["git", "describe", "--always", "--dirty", "--tags"],
-            cwd=root,
-            capture_output=True,
-            text=True,
-            check=True,
-            timeout=10,
-        )
-        return out.stdout.strip() or "unknown"
-    except (OSError, subprocess.SubprocessError):
-        return "unknown"
 
 
 def counts(values: Sequence[str] | pd.Series, words: Sequence[str]) -> dict[str, int]:
@@ -1100,12 +1085,12 @@ def _provenance_section(papers: Sequence[_Paper], root: Path, config_dir: Path) 
         "Code version",
         [
             Paragraph(
-                f"This report was built at git describe {_git_describe(root)}. The scenario "
+                f"This report was built at git describe {git_describe(root)}. The scenario "
                 "results were computed at: "
                 + ", ".join(f"{k or 'unknown'} ({_plural(n, 'run')})" for k, n in describes.items())
                 + "."
                 if describes
-                else f"This report was built at git describe {_git_describe(root)}."
+                else f"This report was built at git describe {git_describe(root)}."
             )
         ],
     )
