@@ -387,15 +387,19 @@ def test_scoreboard_ids_link_to_their_rows(built):
         v = pd.read_csv(built.root / "results" / slug / "verdicts.csv", dtype=str,
                         keep_default_na=False)  # fmt: skip
         failing = v[~v["verdict"].isin(["reproduced", "consistent", "upheld"])]
-        base = {i.split("/")[0] for i in failing["id"]}
+        full = set(failing["id"])
+        names = full | {i.split("/")[0] for i in full}  # an item, or one curve's variant of it
         line = next(r.line for r in built.doc.scoreboard if r.slug == slug)
-        named = {b for b in base if re.search(rf"(?<![\w.]){re.escape(b)}(?![\w])", line)}
-        assert bool(named) == bool(base), slug  # the line names some (at most 5 per group)
+        named = {b for b in names if re.search(rf"(?<![\w./]){re.escape(b)}(?![\w/])", line)}
+        assert bool(named) == bool(full), slug  # the line names some (at most 5 per group)
         mine = [(a, w) for a, w in links if a.startswith(f"row-{slug.replace('_', '-')}-")]
         assert {w for _, w in mine} == named, slug
         expected += len(named)
         for anchor, word in mine:
-            assert rows[anchor].split("/")[0] == word, (anchor, rows[anchor])
+            target = rows[anchor]
+            assert (target if "/" in word else target.split("/")[0]) == word, (anchor, target)
+            if "/" in word:  # a single failing variant links to that variant's row
+                assert target in full
     assert len(links) == expected
 
 
@@ -420,7 +424,9 @@ def test_line_names_the_failures():
     assert "A2 (outside the Monte Carlo tolerance; ours +0.4 % off the published)" in (
         rescience_line(audit, near)
     )
-    assert "not upheld: C1" in line
+    assert "not upheld: C1/a." in line  # only variant a fails: named as such
+    both = verdicts.assign(verdict=["reproduced", "not_reproduced", "not_upheld", "not_upheld"])
+    assert "not upheld: C1." in rescience_line(audit, both)  # every variant fails: the item
     assert "1 of 2 printed equations differ" in line
     good = verdicts.assign(verdict=["reproduced", "consistent", "upheld", "upheld"])
     assert rescience_line(audit, good).startswith("Full reproduction")

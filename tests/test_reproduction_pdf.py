@@ -366,3 +366,21 @@ def test_section_titles_and_pages_match_the_html(report, _):
     assert n >= body_start + len(top)
     body_pages = n - body_start
     assert pages[-1].endswith(f"{body_pages} / {body_pages}")
+
+
+@pytest.mark.parametrize("_", [pytest.param(None, marks=NEEDS_RUN)])
+def test_nothing_runs_off_the_text_area(report, tmp_path, _):
+    """Every word of every page (pdftotext -bbox) stays inside the page less 15 mm per side:
+    tables, wide equations and their line-broken forms fit (the margins are 20 mm)."""
+    _, pdf, _, _ = report
+    out = tmp_path / "bbox.html"
+    r = _run(POPPLER["pdftotext"], "-bbox", str(pdf), str(out))
+    assert r.returncode == 0, r.stderr
+    inset = 15 / 25.4 * 72
+    off = []
+    for n, page in enumerate(out.read_text(encoding="utf-8").split("<page ")[1:], 1):
+        width = float(re.search(r'width="([\d.]+)"', page).group(1))
+        for m in re.finditer(r'xMin="([\d.]+)" yMin="[\d.]+" xMax="([\d.]+)"[^>]*>([^<]*)<', page):
+            if float(m.group(1)) < inset or float(m.group(2)) > width - inset:
+                off.append((n, m.group(3)))
+    assert off == [], off[:10]

@@ -453,8 +453,11 @@ class _Page:
                 "the results' figure files)."
             )
         label, text = _split_label(caption)
-        if label is None:
+        if label is None or "not in the paper" in text.lower():
+            # numbered apart from the paper's figures, whatever the page called it
             self.extra_figures += 1
+            if label is not None:
+                text = f"{text} (figure file {path.stem})"
             label = f"Extra fig. {self.extra_figures}"
         return Figure(path=str(path.resolve()), caption=text, label=label)
 
@@ -608,12 +611,24 @@ def _paper_title(slug: str) -> tuple[str, str]:
 # --------------------------------------------------------------------------- scoreboard
 
 
-def _compact_ids(ids: Sequence[str], limit: int = 5) -> str:
-    """Distinct ids (the part before a '/' variant suffix), at most ``limit`` shown."""
-    base = list(dict.fromkeys(str(i).split("/")[0] for i in ids))
-    shown = ", ".join(base[:limit])
-    if len(base) > limit:
-        shown += f" and {len(base) - limit} more"
+def _compact_ids(ids: Sequence[str], all_ids: Sequence[str] = (), limit: int = 5) -> str:
+    """The ids in ``ids``, at most ``limit`` shown. An id with variants (``F5.3.crossover/
+    proposed_simulated``: one published item judged on several curves) is named by its base
+    when every variant of it in ``all_ids`` is in ``ids``, else by the variants in ``ids``."""
+    chosen = list(dict.fromkeys(str(i) for i in ids))
+    variants: dict[str, list[str]] = {}
+    for i in dict.fromkeys(str(i) for i in [*all_ids, *chosen]):
+        variants.setdefault(i.split("/")[0], []).append(i)
+    names: list[str] = []
+    for i in chosen:
+        base = i.split("/")[0]
+        whole = all(v in chosen for v in variants[base])
+        name = base if whole else i
+        if name not in names:
+            names.append(name)
+    shown = ", ".join(names[:limit])
+    if len(names) > limit:
+        shown += f" and {len(names) - limit} more"
     return shown
 
 
@@ -623,12 +638,16 @@ _NOT_REPRODUCED_WHY = {
 }
 
 
-def _number(text: object) -> float | None:
-    try:
-        value = float(str(text).strip())
-    except ValueError:
+_LEADING_NUMBER = re.compile(r"^\s*([+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)(\s*\S*)\s*$")
+
+
+def _number(text: object) -> tuple[float, str] | None:
+    """``(value, unit)`` of a cell such as ``"0.16"`` or ``"2400 s"`` (one unit word at most)."""
+    m = _LEADING_NUMBER.match(str(text))
+    if m is None:
         return None
-    return value if math.isfinite(value) else None
+    value = float(m.group(1))
+    return (value, m.group(2).strip()) if math.isfinite(value) else None
 
 
 def _ratio_range(rows: pd.DataFrame) -> str:
@@ -638,8 +657,8 @@ def _ratio_range(rows: pd.DataFrame) -> str:
     ratios = []
     for pub, ours in zip(rows["published"], rows["reproduced"], strict=True):
         a, b = _number(pub), _number(ours)
-        if a is not None and b is not None and a != 0:
-            ratios.append(b / a)
+        if a is not None and b is not None and a[0] != 0 and a[1] == b[1]:  # same unit
+            ratios.append(b[0] / a[0])
     if not ratios:
         return ""
     lo, hi = min(ratios), max(ratios)
@@ -688,7 +707,7 @@ def rescience_line(audit: pd.DataFrame, verdicts: pd.DataFrame) -> str:
                 spread = _ratio_range(g)
                 if spread:
                     why += f"; {spread}"
-                groups.append(f"{_compact_ids(list(g['id']))} ({why})")
+                groups.append(f"{_compact_ids(list(g['id']), list(numbers['id']))} ({why})")
             text += "; not reproduced: " + "; ".join(groups)
         parts.append(text)
     if len(claims):
@@ -696,10 +715,10 @@ def rescience_line(audit: pd.DataFrame, verdicts: pd.DataFrame) -> str:
         for word in ("not_upheld", "not_checkable"):
             ids = list(claims.loc[claims["verdict"] == word, "id"])
             if ids:
-                text += f"; {_words(word)}: {_compact_ids(ids)}"
+                text += f"; {_words(word)}: {_compact_ids(ids, list(claims['id']))}"
         other = claims[~claims["verdict"].isin(CLAIM_WORDS)]
         if len(other):
-            text += f"; other verdicts: {_compact_ids(list(other['id']))}"
+            text += f"; other verdicts: {_compact_ids(list(other['id']), list(claims['id']))}"
         parts.append(text)
     if len(audit):
         text = (

@@ -329,7 +329,7 @@ _TONE = {
 _SHORT = {"not_checkable": "not checkable", "not_reproduced": "not reproduced"}
 
 
-_TOKEN = re.compile(r"[A-Za-z0-9_.]+")
+_TOKEN = re.compile(r"[A-Za-z0-9_./]+")  # ids, with a "/variant" suffix
 
 
 def _linked(text: str, targets: dict[str, str]) -> str:

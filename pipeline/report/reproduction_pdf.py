@@ -387,7 +387,19 @@ class _Renderer:
             forms.append(("printed \\ \\= derived", row.printed_srepr))
         else:
             forms += [("printed", row.printed_srepr), ("derived", row.derived_srepr)]
-        cells = [f"[{label}], [{self.math(srepr)}]" for label, srepr in forms if srepr]
+        cells = []
+        for label, srepr in forms:
+            if not srepr:
+                continue
+            if label == "derived" and row.status == "match" and _expanded(srepr, row.printed_srepr):
+                ratio = _typst_length(srepr) / _typst_length(row.printed_srepr)
+                cells.append(
+                    "[derived], [#text(fill: neutral)[not printed here: an unsimplified expansion "
+                    f"{ratio:.0f} times as long as the printed form, equal to it (residual 0); "
+                    "the HTML report shows it in full.]]"
+                )
+                continue
+            cells.append(f"[{label}], [{self.math(srepr)}]")
         if row.residual_srepr:
             cells.append(f"[residual], [{self.math(row.residual_srepr)}]")
         elif (
@@ -451,6 +463,25 @@ class _Renderer:
         for sec in self.doc.sections:
             parts.extend(self.section(sec, 1))
         return "\n\n".join(parts) + "\n"
+
+
+#: A matching derived form this many times longer than the printed one (and longer than
+#: EXPANDED_MIN_CHARS of Typst) is an unsimplified expansion: the PDF names it instead of
+#: printing pages of products (the HTML report keeps every form).
+EXPANDED_RATIO = 4.0
+EXPANDED_MIN_CHARS = 2000
+
+
+def _typst_length(srepr: str | None) -> int:
+    try:
+        return len(typst_math(_from_srepr(srepr))) if srepr else 0
+    except Exception:  # noqa: BLE001 - an unprintable form counts as short (shown raw)
+        return 0
+
+
+def _expanded(derived: str, printed: str | None) -> bool:
+    n, p = _typst_length(derived), _typst_length(printed)
+    return p > 0 and n > EXPANDED_MIN_CHARS and n > EXPANDED_RATIO * p
 
 
 def _formless(row: EquationRow) -> bool:

@@ -507,7 +507,8 @@ class _BreakablePrinter(TypstMathPrinter):
     """For inline (line-breaking) math: Typst breaks an inline equation after top-level ``+``,
     ``-`` and relations only, never inside ``frac`` or a ``(...)`` group. This printer keeps
     sums at the top level: ``frac(a + b, c)`` becomes ``frac(1, c) \\( a + b \\)``, a sum inside
-    a product is bracketed with literal parentheses (which do not form a group)."""
+    a product is bracketed with literal parentheses (which do not form a group), and a sum in a
+    denominator is written after a literal slash: ``\\( a + b \\) \\/ \\( c + d \\)``."""
 
     def _top(self, expr: Any) -> str:
         if isinstance(expr, sp.Add):
@@ -523,12 +524,19 @@ class _BreakablePrinter(TypstMathPrinter):
             sign, num, den = self._split_fraction(expr)
             order = {a: i for i, a in enumerate(expr.as_ordered_factors())}
             num.sort(key=lambda a: order.get(a, -1))
-            parts = [f"frac(1, {self._product(den)})"] if den else []
+            parts = []
             for f in num:
                 if isinstance(f, sp.Add):
                     parts.append(f"\\( {self._top(f)} \\)")
                 else:
                     parts.append(self.parenthesize(f, PRECEDENCE["Mul"]))
+            if any(isinstance(d, sp.Add) for d in den):
+                # a sum in the denominator: "(num) / (den)" with literal parentheses and slash,
+                # so both sums break across lines (a frac never does)
+                top = " ".join(parts) if parts else "1"
+                return ("-" if sign < 0 else "") + f"{top} \\/ \\( {self._top(sp.Mul(*den))} \\)"
+            if den:
+                parts.insert(0, f"frac(1, {self._product(den)})")
             return ("-" if sign < 0 else "") + " ".join(parts)
         return self._print(expr)
 
