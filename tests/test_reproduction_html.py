@@ -296,7 +296,12 @@ def test_mathml_is_well_formed_and_present(built):
         for b in sub.blocks
         if type(b).__name__ == "EquationTable"
         for r in b.rows
-        for m in (r.printed_mathml, r.derived_mathml)
+        # the same expression printed and derived is shown once, as "printed = derived"
+        for m in (
+            (r.printed_mathml,)
+            if r.printed_srepr and r.printed_srepr == r.derived_srepr
+            else (r.printed_mathml, r.derived_mathml)
+        )
         if m
     )
     assert n_expected > 0 and len(maths) >= n_expected

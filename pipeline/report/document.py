@@ -15,7 +15,7 @@ import importlib
 import json
 import math
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from html.parser import HTMLParser
 from pathlib import Path
@@ -40,6 +40,9 @@ __all__ = [
     "Table",
     "build_document",
     "counts",
+    "equation_groups",
+    "equation_list",
+    "formless",
     "rescience_line",
     "score_row",
 ]
@@ -144,6 +147,42 @@ class Document:
     generated_from: str
     scoreboard: list[ScoreRow]
     sections: list[Section]
+
+
+def formless(row: EquationRow) -> bool:
+    """An audit row with nothing to typeset (no printed, derived or residual form)."""
+    return not (row.printed_srepr or row.derived_srepr or row.residual_srepr) and (
+        not row.residual_text or row.status == "match"
+    )
+
+
+def equation_groups(rows: Sequence[EquationRow]) -> Iterator[list[EquationRow]]:
+    """The audit rows, consecutive rows with no forms and the same status and note grouped
+    (eqs. 1-11 of north_finding, all "not in the seed text", become one group)."""
+    group: list[EquationRow] = []
+    for row in rows:
+        if (
+            group
+            and formless(row)
+            and formless(group[-1])
+            and (row.status, row.note) == (group[-1].status, group[-1].note)
+        ):
+            group.append(row)
+            continue
+        if group:
+            yield group
+        group = [row]
+    if group:
+        yield group
+
+
+def equation_list(names: list[str]) -> str:
+    """``1–11`` for a run of consecutive integers, else the names separated by commas."""
+    if len(names) > 1 and all(n.isdigit() for n in names):
+        nums = [int(n) for n in names]
+        if nums == list(range(nums[0], nums[0] + len(nums))):
+            return f"{nums[0]}–{nums[-1]}"
+    return ", ".join(names)
 
 
 # =========================================================================== building

@@ -32,6 +32,8 @@ from pipeline.report.document import (
     ScoreRow,
     Section,
     Table,
+    equation_groups,
+    equation_list,
 )
 
 __all__ = ["CSS", "render_html", "section_numbers", "write_html"]
@@ -96,12 +98,15 @@ nav.toc ul ul { padding-left: 1.6em; font-size: 0.95em; }
 nav.toc > ul > li { margin-top: 0.35em; }
 table.data tr.bad td { background: #fbe3e1; }
 div.scroll { overflow-x: auto; max-width: 100%; }
+table.equations { width: 100%; }
 table.equations td { vertical-align: top; }
-table.equations td.eq { font-weight: bold; white-space: nowrap; }
-table.equations td.math { min-width: 6em; }
-table.equations div.m { max-width: 23em; max-height: 16em; overflow: auto; padding: 0.15em 0; }
-table.equations td.note { min-width: 14em; max-width: 22em; }
-table.equations td.note div.m { max-width: 22em; }
+table.equations td.eq { font-weight: bold; white-space: nowrap; width: 4.5em; }
+table.equations td.forms { width: 100%; }
+table.equations dl.forms { display: grid; grid-template-columns: max-content minmax(0, 1fr);
+  column-gap: 0.8em; row-gap: 0.3em; margin: 0.2em 0; }
+table.equations dl.forms dt { color: #555; font-size: 0.85em; padding-top: 0.35em; }
+table.equations dl.forms dd { margin: 0; min-width: 0; }
+table.equations div.m { max-height: 24em; overflow: auto; padding: 0.15em 0; }
 table.equations p.note { margin: 0.2em 0; font-size: 0.9em; color: #333; }
 table.equations tr.v-match td { background: #fff; }
 table.equations tr.v-differs td { background: #fdf0ee; }
@@ -230,24 +235,40 @@ def _math(mathml: str | None) -> str:
     return ""
 
 
-def _equation_row(r: EquationRow, anchors: _Anchors | None = None) -> str:
-    residual = ""
-    if r.status != "match":
-        if r.residual_mathml:
-            residual = _math(r.residual_mathml)
-        elif r.residual_text:
-            residual = f'<code class="res">{H.escape(r.residual_text)}</code>'
-    elif r.residual_text and r.residual_text != "0":
-        residual = f'<code class="res">{H.escape(r.residual_text)}</code>'
+def _forms(r: EquationRow) -> str:
+    """The printed, derived and residual forms of one audited equation, one per line (the
+    printed and derived forms once if they are the same expression)."""
+    out = []
+    if r.printed_mathml and r.printed_srepr and r.printed_srepr == r.derived_srepr:
+        out.append(("printed = derived", _math(r.printed_mathml)))
+    else:
+        out += [("printed", _math(r.printed_mathml)), ("derived", _math(r.derived_mathml))]
+    if r.status != "match" and r.residual_mathml:
+        out.append(("residual", _math(r.residual_mathml)))
+    elif r.residual_text and (r.status != "match" or r.residual_text != "0"):
+        out.append(("residual", f'<code class="res">{H.escape(r.residual_text)}</code>'))
+    items = "".join(f"<dt>{H.escape(k)}</dt><dd>{v}</dd>" for k, v in out if v)
+    return f'<dl class="forms">{items}</dl>' if items else ""
+
+
+def _equation_row(group: list[EquationRow], anchors: _Anchors | None = None) -> str:
+    """One audited equation (or a run of form-less ones with the same status and note):
+    number and status, then the note and the forms across the table's width."""
+    r = group[0]
+    claim = anchors.claim if anchors is not None else (lambda kind, key: None)
+    row_id = _id_attr(claim("eq", r.equation))
+    # every equation of a run keeps an anchor of its own
+    spans = "".join(
+        f'<span id="{H.escape(a)}"></span>' for g in group[1:] if (a := claim("eq", g.equation))
+    )
+    label = "Eqs. " if len(group) > 1 else ""
+    number = equation_list([g.equation for g in group])
     note = f'<p class="note">{H.escape(r.note)}</p>' if r.note else ""
     return (
-        f'<tr class="{H.css_class(r.status)}"'
-        f"{_id_attr(anchors.claim('eq', r.equation) if anchors else None)}>"
-        f'<td class="eq">({H.escape(r.equation)})</td>'
+        f'<tr class="{H.css_class(r.status)}"{row_id}>'
+        f'<td class="eq">{spans}{label}({H.escape(number)})</td>'
         f'<td><span class="{H.css_class(r.status)}">{H.escape(_words(r.status))}</span></td>'
-        f'<td class="math">{_math(r.printed_mathml)}</td>'
-        f'<td class="math">{_math(r.derived_mathml)}</td>'
-        f'<td class="note">{residual}{note}</td></tr>\n'
+        f'<td class="forms">{note}{_forms(r) if len(group) == 1 else ""}</td></tr>\n'
     )
 
 
@@ -258,10 +279,10 @@ def _words(word: str) -> str:
 def _equation_table(t: EquationTable, anchors: _Anchors | None = None) -> str:
     head = "".join(
         f"<th>{c}</th>"
-        for c in ("eq.", "status", "printed", "derived", "residual (printed − derived); note")
+        for c in ("eq.", "status", "note; printed (the paper), derived (SymPy), residual")
     )
     cap = f"<caption>{H.escape(t.caption)}</caption>\n" if t.caption else ""
-    rows = "".join(_equation_row(r, anchors) for r in t.rows)
+    rows = "".join(_equation_row(g, anchors) for g in equation_groups(t.rows))
     return (
         f'<div class="scroll"><table class="data equations">\n{cap}'
         f"<thead><tr>{head}</tr></thead>\n<tbody>\n{rows}</tbody>\n</table></div>\n"

@@ -36,6 +36,8 @@ from pipeline.report.document import (
     ScoreRow,
     Section,
     Table,
+    equation_groups,
+    equation_list,
 )
 from pipeline.report.typst_math import typst_math, typst_math_breakable, typst_string
 
@@ -365,11 +367,11 @@ class _Renderer:
                 f"#block(sticky: true, above: 1.1em, below: 0.5em, text(size: 9pt)[*{escape(eqt.caption)}*])"
             )
         out.append("#[#set text(size: 9.5pt)")
-        for group in _groups(eqt.rows):
+        for group in equation_groups(eqt.rows):
             if len(group) == 1:
                 out.append(self.equation_row(group[0]))
             else:  # consecutive rows without forms and with the same note: one line
-                eqs = _equation_list([r.equation for r in group])
+                eqs = equation_list([r.equation for r in group])
                 head = f"[*Eqs. {escape(eqs)}* #h(0.5em) {self.status(group[0].status)}"
                 head += f" #h(0.5em) {escape(group[0].note)}]" if group[0].note else "]"
                 out.append(f"#eqrow({head})")
@@ -482,40 +484,6 @@ def _typst_length(srepr: str | None) -> int:
 def _expanded(derived: str, printed: str | None) -> bool:
     n, p = _typst_length(derived), _typst_length(printed)
     return p > 0 and n > EXPANDED_MIN_CHARS and n > EXPANDED_RATIO * p
-
-
-def _formless(row: EquationRow) -> bool:
-    return not (row.printed_srepr or row.derived_srepr or row.residual_srepr) and (
-        not row.residual_text or row.status == "match"
-    )
-
-
-def _groups(rows: list[EquationRow]) -> Iterator[list[EquationRow]]:
-    """Consecutive rows with no forms and the same status and note, grouped."""
-    group: list[EquationRow] = []
-    for row in rows:
-        if (
-            group
-            and _formless(row)
-            and _formless(group[-1])
-            and (row.status, row.note) == (group[-1].status, group[-1].note)
-        ):
-            group.append(row)
-            continue
-        if group:
-            yield group
-        group = [row]
-    if group:
-        yield group
-
-
-def _equation_list(names: list[str]) -> str:
-    """``1–11`` for a run of consecutive integers, else the names separated by commas."""
-    if all(n.isdigit() for n in names):
-        nums = [int(n) for n in names]
-        if nums == list(range(nums[0], nums[0] + len(nums))):
-            return f"{nums[0]}–{nums[-1]}"
-    return ", ".join(names)
 
 
 _ALT_SNIPPETS = re.compile(r"\$([^$]+)\$")
