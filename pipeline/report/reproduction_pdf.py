@@ -205,7 +205,7 @@ class _Renderer:
             return f"#link(<{self.labels[target[1:]]}>)[{escape(link.text)}]"
         if target.startswith("#"):
             return escape(link.text)
-        shown = "" if target == link.text else f" ({escape(_breakable(target))})"
+        shown = "" if target in link.text else f" ({escape(_breakable(target))})"
         return f"#link({typst_string(target)})[{escape(link.text)}]{shown}"
 
     def status(self, word: str) -> str:
