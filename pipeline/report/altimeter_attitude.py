@@ -58,7 +58,7 @@ PAPER_TITLE = (
 )
 PAPER_CITATION = (
     "H. Ghanbarpour Asl, S. H. Pourtakdust (Sharif University of Technology), "
-    "Persian journal paper with an English abstract"
+    "Persian journal paper with an English abstract; its journal and year are not in the seed text"
 )
 DASH = "—"
 ANGLES = ("roll", "pitch")

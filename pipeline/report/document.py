@@ -855,7 +855,8 @@ def _paper_section(p: _Paper) -> Section:
     subs.append(_assumptions(p))
     subs.append(_findings(p, extra_figs, extra_subs))
     subs.append(_notebook(p))
-    intro = [Paragraph(f"{p.title}. {p.citation}.".replace("..", "."))]
+    # the heading is the paper's title: the intro gives only the reference
+    intro = [Paragraph(f"Reproduced paper: {p.citation}.".replace("..", "."))] if p.citation else []
     return Section(id=p.slug, title=p.title, blocks=intro, subsections=subs)
 
 

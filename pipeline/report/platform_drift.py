@@ -22,7 +22,10 @@ TITLE = (
     "Gyroscope drift error analysis in the position-independent navigation algorithm of a "
     "stable platform inertial system"
 )
-CITATION = "Ghesmati, Heirani Nobari, Arvan, Kashaninia (Persian journal paper, 2018)"
+CITATION = (
+    "M. Ghesmati, J. Heirani Nobari, M. R. Arvan, A. Kashaninia, Persian journal paper with an "
+    "English abstract, accepted 1397 (2018); the journal's name is not in the seed text"
+)
 
 
 def _counts(frame: pd.DataFrame, column: str) -> str:
