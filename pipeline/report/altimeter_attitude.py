@@ -28,6 +28,8 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from pipeline.altimeter_attitude.paper import CITATION as PAPER_CITATION
+from pipeline.altimeter_attitude.paper import TITLE as PAPER_TITLE
 from pipeline.altimeter_attitude.scenario import load_scenario
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
 from pipeline.columns import (
@@ -53,13 +55,6 @@ __all__ = [
 ]
 
 SLUG = "altimeter_attitude"
-PAPER_TITLE = (
-    "Strapdown attitude estimation using IMU and altimeter integration for maneuvering vehicles"
-)
-PAPER_CITATION = (
-    "H. Ghanbarpour Asl, S. H. Pourtakdust (Sharif University of Technology), "
-    "Persian journal paper with an English abstract; its journal and year are not in the seed text"
-)
 DASH = "—"
 ANGLES = ("roll", "pitch")
 

@@ -13,19 +13,11 @@ import pandas as pd
 
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
 from pipeline.platform_drift.figures import FIGURES
+from pipeline.platform_drift.paper import CITATION, TITLE
 from pipeline.platform_drift.scenario import load_scenario
 from pipeline.report import html as H
 
 __all__ = ["render_page", "build_page"]
-
-TITLE = (
-    "Gyroscope drift error analysis in the position-independent navigation algorithm of a "
-    "stable platform inertial system"
-)
-CITATION = (
-    "M. Ghesmati, J. Heirani Nobari, M. R. Arvan, A. Kashaninia, Persian journal paper with an "
-    "English abstract, accepted 1397 (2018); the journal's name is not in the seed text"
-)
 
 
 def _counts(frame: pd.DataFrame, column: str) -> str:

@@ -1,0 +1,203 @@
+"""The paper plug-in: everything one paper contributes to the shared workflow and report.
+
+A paper is a package ``pipeline/<slug>/`` whose module ``paper.py`` defines ``PAPER``, a
+:class:`Paper`. The shared layer (the Snakefile and ``pipeline/rules/``, the verdict engine,
+the report) loads the papers listed in ``config/config.yaml`` through
+:mod:`pipeline.registry` and iterates over them; it never names a paper.
+
+Paths in a paper's steps are relative to the repository root and are built from a
+:class:`Context`, so the same plug-in serves any ``results_dir`` and any set of scenarios.
+
+Conventions (for every paper):
+
+- ``results/<slug>/`` holds the paper's results (``equation_audit.csv``, ``verdicts.csv``,
+  ``figures/``, one folder per scenario); ``config/scenarios/<slug>/<name>.yaml`` its
+  scenarios; ``config/published/<slug>.yaml`` its published values; ``derivations/<slug>/``
+  its SymPy derivations (``audit.py`` with ``checks()``, ``generate.py`` with ``source()``);
+  ``pipeline/generated/<slug>.py`` the generated code; ``notebooks/<slug>.ipynb`` its notebook.
+- A :class:`Step` is one Snakemake rule, ``<slug>_<step name>``; its ``entry`` is called as
+  ``entry(inputs, outputs, params, log)`` with the rule's named inputs and outputs (strings or
+  lists of strings), its params and a ``log(message)`` function.
+
+>>> fig = FigureSpec("fig5_stationary.png", 5, "Fig. 5: stationary vehicle")
+>>> fig.svg, fig.in_paper
+('fig5_stationary.svg', True)
+>>> FigureSpec("fig9_latitude.png", None, "latitude sweep").label
+'not in the paper'
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+__all__ = ["SLUG_PATTERN", "Context", "FigureSpec", "Paper", "Step", "Paths", "StepEntry"]
+
+#: A paper's slug: a Python identifier in lower case (it names a package and a rule prefix).
+SLUG_PATTERN = re.compile(r"^[a-z][a-z0-9_]*$")
+
+#: Named paths of a rule's inputs or outputs: a path (str) or a list of paths.
+Paths = Mapping[str, "str | list[str]"]
+#: ``entry(inputs, outputs, params, log)``: what a step runs.
+StepEntry = Callable[[Mapping[str, Any], Mapping[str, Any], Mapping[str, Any], Callable], None]
+
+
+@dataclass(frozen=True)
+class FigureSpec:
+    """One figure a paper writes: ``results/<slug>/figures/<file>`` (PNG) and its SVG twin.
+
+    ``number`` is the paper's own figure number, ``None`` for a figure the paper lacks.
+    """
+
+    file: str
+    number: int | None
+    caption: str
+
+    @property
+    def svg(self) -> str:
+        """The vector twin's file name (the PDF report typesets it)."""
+        return str(Path(self.file).with_suffix(".svg"))
+
+    @property
+    def in_paper(self) -> bool:
+        return self.number is not None
+
+    @property
+    def label(self) -> str:
+        """``Fig. N`` for a figure of the paper, else ``not in the paper``."""
+        return f"Fig. {self.number}" if self.number is not None else "not in the paper"
+
+
+@dataclass(frozen=True)
+class Context:
+    """Where one paper's files are, for the current config (built by the registry)."""
+
+    slug: str
+    results_dir: str
+    reports_dir: str
+    scenarios: tuple[str, ...]
+    settings: Mapping[str, Any]
+
+    @property
+    def results(self) -> str:
+        """``results/<slug>``."""
+        return f"{self.results_dir}/{self.slug}"
+
+    @property
+    def scenarios_dir(self) -> str:
+        return f"config/scenarios/{self.slug}"
+
+    @property
+    def published(self) -> str:
+        return f"config/published/{self.slug}.yaml"
+
+    def scenario_file(self, name: str) -> str:
+        return f"{self.scenarios_dir}/{name}.yaml"
+
+    def per_scenario(self, name: str) -> list[str]:
+        """``results/<slug>/<scenario>/<name>`` for every scenario."""
+        return [f"{self.results}/{s}/{name}" for s in self.scenarios]
+
+    def figure(self, name: str) -> str:
+        return f"{self.results}/figures/{name}"
+
+    @property
+    def page(self) -> str:
+        return f"{self.reports_dir}/{self.slug}.html"
+
+    @property
+    def notebook_html(self) -> str:
+        return f"{self.reports_dir}/notebooks/{self.slug}.html"
+
+
+@dataclass(frozen=True)
+class Step:
+    """One step of a paper's workflow (one Snakemake rule ``<slug>_<name>``).
+
+    ``inputs`` and ``outputs`` map the rule's input/output names to paths built from the
+    :class:`Context`; a per-scenario step uses ``{scenario}`` in its paths (one job per
+    scenario). ``entry`` is ``"module:function"``; the modules it imports (recursively, inside
+    this repository) are inputs of the rule too, so an edit reruns the step. ``report`` tags
+    outputs for ``snakemake --report``: output name -> (subcategory, caption file stem).
+    """
+
+    name: str
+    entry: str
+    inputs: Callable[[Context], Paths]
+    outputs: Callable[[Context], Paths]
+    per_scenario: bool = False
+    params: Callable[[Context], Mapping[str, Any]] = field(default=lambda ctx: {})
+    report: Mapping[str, tuple[str, str]] = field(default_factory=dict)
+
+    @property
+    def module(self) -> str:
+        return self.entry.split(":", 1)[0]
+
+
+@dataclass(frozen=True)
+class Paper:
+    """What one paper plugs into the shared workflow, verdicts and report."""
+
+    slug: str
+    title: str
+    citation: str
+    #: ``load(path)`` validates one scenario file (raises ``ConfigError`` naming the file)
+    load_scenario: Callable[[Path], Any]
+    figures: tuple[FigureSpec, ...]
+    steps: tuple[Step, ...] = ()
+    #: results the notebook reads (beside the derivations it imports)
+    notebook_inputs: Callable[[Context], Sequence[str]] = field(default=lambda ctx: ())
+
+    def __post_init__(self) -> None:
+        if not SLUG_PATTERN.match(self.slug):
+            raise ValueError(
+                f"paper slug {self.slug!r}: must match {SLUG_PATTERN.pattern} (a package name)"
+            )
+        names = [s.name for s in self.steps]
+        if len(set(names)) != len(names):
+            raise ValueError(f"paper {self.slug}: step names repeat: {names}")
+        files = [f.file for f in self.figures]
+        if len(set(files)) != len(files):
+            raise ValueError(f"paper {self.slug}: figure files repeat: {files}")
+
+    @property
+    def audit_module(self) -> str:
+        return f"derivations.{self.slug}.audit"
+
+    @property
+    def generator_module(self) -> str:
+        return f"derivations.{self.slug}.generate"
+
+    @property
+    def generated(self) -> str:
+        return f"pipeline/generated/{self.slug}.py"
+
+    @property
+    def notebook(self) -> str:
+        return f"notebooks/{self.slug}.ipynb"
+
+    @property
+    def paper_figure_numbers(self) -> list[int]:
+        return sorted({f.number for f in self.figures if f.number is not None})
+
+    def figure(self, file: str) -> FigureSpec:
+        """The figure written as ``file`` (PNG name); KeyError names the known ones."""
+        for f in self.figures:
+            if f.file == file:
+                return f
+        raise KeyError(f"paper {self.slug}: no figure {file!r}; figures: {self.figure_files}")
+
+    @property
+    def figure_files(self) -> list[str]:
+        return [f.file for f in self.figures]
+
+    def step(self, name: str) -> Step:
+        for s in self.steps:
+            if s.name == name:
+                return s
+        raise KeyError(
+            f"paper {self.slug}: no step {name!r}; steps: {[s.name for s in self.steps]}"
+        )

@@ -1,0 +1,63 @@
+"""The paper registry: the :class:`~pipeline.paper.Paper` plug-ins the config lists.
+
+``papers: [a, b]`` in ``config/config.yaml`` loads ``pipeline/a/paper.py`` and
+``pipeline/b/paper.py`` (their ``PAPER``), in that order. Nothing else in the shared layer
+knows which papers exist.
+
+>>> load_paper("no such paper")
+Traceback (most recent call last):
+...
+pipeline.config.ConfigError: config/config.yaml: papers: 'no such paper': not a paper slug (must match ^[a-z][a-z0-9_]*$)
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+from pipeline.config import ConfigError
+from pipeline.paper import SLUG_PATTERN, Context, Paper
+from pipeline.scenarios import scenario_names
+
+__all__ = ["ROOT", "load_paper", "load_papers", "context"]
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def load_paper(slug: str, root: Path = ROOT, source: str = "config/config.yaml") -> Paper:
+    """The ``PAPER`` of ``pipeline/<slug>/paper.py``; ConfigError naming what is wrong."""
+    if not isinstance(slug, str) or not SLUG_PATTERN.match(slug):
+        raise ConfigError(
+            f"{source}: papers: {slug!r}: not a paper slug (must match {SLUG_PATTERN.pattern})"
+        )
+    if not (root / "pipeline" / slug / "paper.py").is_file():
+        known = sorted(p.parent.name for p in (root / "pipeline").glob("*/paper.py"))
+        raise ConfigError(
+            f"{source}: papers: {slug!r}: no plug-in pipeline/{slug}/paper.py; papers: {known}"
+        )
+    module = importlib.import_module(f"pipeline.{slug}.paper")
+    paper = getattr(module, "PAPER", None)
+    if not isinstance(paper, Paper):
+        raise ConfigError(f"pipeline/{slug}/paper.py: PAPER must be a pipeline.paper.Paper")
+    if paper.slug != slug:
+        raise ConfigError(f"pipeline/{slug}/paper.py: PAPER.slug is {paper.slug!r}, not {slug!r}")
+    return paper
+
+
+def load_papers(slugs: Sequence[str], root: Path = ROOT) -> dict[str, Paper]:
+    """Every listed paper, in config order."""
+    return {slug: load_paper(slug, root) for slug in slugs}
+
+
+def context(paper: Paper, config: Mapping[str, Any], root: Path = ROOT) -> Context:
+    """Where ``paper``'s files are under ``config`` (scenarios found on disk, sorted)."""
+    scenarios = tuple(scenario_names(root / "config" / "scenarios" / paper.slug))
+    return Context(
+        slug=paper.slug,
+        results_dir=str(config.get("results_dir", "results")),
+        reports_dir=str(config.get("reports_dir", "reports")),
+        scenarios=scenarios,
+        settings=dict(config.get(paper.slug) or {}),
+    )
