@@ -1,12 +1,12 @@
-# Reproduction workflow: one include per paper; `snakemake --cores 2` (or `make reproduce`).
+# Reproduction workflow: `snakemake --cores 2` (or `make reproduce`). Every paper listed in
+# config/config.yaml (`papers:`) is a plug-in, pipeline/<slug>/paper.py; nothing here names one.
 #
-#   derivations --audit-->   results/<slug>/equation_audit.csv
-#   derivations --codegen--> pipeline/generated/<slug>.py   (committed; checked fresh here)
-#   scenarios   --simulate-> results/<slug>/<scenario>/*.csv
-#   published   --compare--> results/<slug>/verdicts.csv
-#   results     --figures--> results/<slug>/figures/
-#   notebooks   --execute--> reports/notebooks/<slug>.html
-#   everything  --report-->  reports/<slug>.html, reports/reproduction.html|pdf
+#   derivations --audit-->    results/<slug>/equation_audit.csv        (derive.smk)
+#   derivations --codegen-->  pipeline/generated/<slug>.py, checked fresh
+#   notebooks   --execute-->  reports/notebooks/<slug>.html
+#   scenarios   --<steps>-->  results/<slug>/<scenario>/..., verdicts, figures, reports/<slug>.html
+#                                                                       (steps.smk, PAPER.steps)
+#   everything  --report-->   reports/reproduction.html|pdf             (report.smk)
 
 
 configfile: "config/config.yaml"
@@ -17,15 +17,19 @@ report: "reports/snakemake/workflow.rst"
 
 
 include: "pipeline/rules/common.smk"
-include: "pipeline/rules/north_finding.smk"
-include: "pipeline/rules/platform_drift.smk"
-include: "pipeline/rules/altimeter_attitude.smk"
-include: "pipeline/rules/reproduction.smk"
+
+
+wildcard_constraints:
+    paper="|".join(PAPERS),
+
+
+include: "pipeline/rules/derive.smk"
+include: "pipeline/rules/steps.smk"
+include: "pipeline/rules/report.smk"
 
 
 rule all:
     input:
-        rules.north_finding_all.input,
-        rules.platform_drift_all.input,
-        rules.altimeter_attitude_all.input,
-        rules.reproduction_all.input,
+        [paper_targets(slug) for slug in PAPERS],
+        rules.reproduction_html.output,
+        rules.reproduction_pdf.output,

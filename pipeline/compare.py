@@ -84,23 +84,23 @@ import yaml
 from pipeline.atomic import write_csv
 
 try:
-    from pipeline.columns import (
+    from pipeline.columns import VERDICT_COLUMNS
+    from pipeline.north_finding.columns import (
         ERROR_BUDGET_COLUMNS,
         ERROR_SOURCES,
         ESTIMATE_COLUMNS,
         MC_TRIAL_COLUMNS,
         METHOD_QUANTITIES,
-        VERDICT_COLUMNS,
     )
 except ModuleNotFoundError:  # run as a Snakemake script: the workflow dir is the cwd
     sys.path.insert(0, os.getcwd())
-    from pipeline.columns import (
+    from pipeline.columns import VERDICT_COLUMNS
+    from pipeline.north_finding.columns import (
         ERROR_BUDGET_COLUMNS,
         ERROR_SOURCES,
         ESTIMATE_COLUMNS,
         MC_TRIAL_COLUMNS,
         METHOD_QUANTITIES,
-        VERDICT_COLUMNS,
     )
 
 REPO_ROOT = Path(__file__).resolve().parents[1]

@@ -4,7 +4,7 @@ Every config file (scenarios, published values) is validated before any compute
 starts. Errors name the file, the field (dotted path), the offending value and
 what is allowed, e.g.::
 
-    config/scenarios/north_finding/x.yaml: site.lat_deg = 95: must be < 90
+    config/scenarios/<slug>/x.yaml: site.lat_deg = 95: must be < 90
 """
 
 from __future__ import annotations

@@ -150,6 +150,9 @@ class Paper:
     steps: tuple[Step, ...] = ()
     #: results the notebook reads (beside the derivations it imports)
     notebook_inputs: Callable[[Context], Sequence[str]] = field(default=lambda ctx: ())
+    #: ``config/schemas/<name>.schema.json`` validating the paper's section of config.yaml
+    #: (``<slug>: {...}``, its ``Context.settings``); None: the paper takes no settings
+    settings_schema: str | None = None
 
     def __post_init__(self) -> None:
         if not SLUG_PATTERN.match(self.slug):

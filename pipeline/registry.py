@@ -17,11 +17,11 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
-from pipeline.config import ConfigError
+from pipeline.config import ConfigError, load_schema, validate
 from pipeline.paper import SLUG_PATTERN, Context, Paper
 from pipeline.scenarios import scenario_names
 
-__all__ = ["ROOT", "load_paper", "load_papers", "context"]
+__all__ = ["ROOT", "load_paper", "load_papers", "context", "validate_scenarios"]
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -51,13 +51,30 @@ def load_papers(slugs: Sequence[str], root: Path = ROOT) -> dict[str, Paper]:
     return {slug: load_paper(slug, root) for slug in slugs}
 
 
-def context(paper: Paper, config: Mapping[str, Any], root: Path = ROOT) -> Context:
-    """Where ``paper``'s files are under ``config`` (scenarios found on disk, sorted)."""
+def context(
+    paper: Paper, config: Mapping[str, Any], root: Path = ROOT, source: str = "config/config.yaml"
+) -> Context:
+    """Where ``paper``'s files are under ``config`` (scenarios found on disk, sorted); its
+    settings (``config[slug]``) validated against the schema the plug-in names."""
     scenarios = tuple(scenario_names(root / "config" / "scenarios" / paper.slug))
+    settings = config.get(paper.slug)
+    if paper.settings_schema is not None:
+        if settings is None:
+            raise ConfigError(f"{source}: {paper.slug}: missing (the paper's settings)")
+        validate(settings, load_schema(paper.settings_schema), f"{source}: {paper.slug}")
+    elif settings is not None:
+        raise ConfigError(f"{source}: {paper.slug}: this paper takes no settings")
     return Context(
         slug=paper.slug,
         results_dir=str(config.get("results_dir", "results")),
         reports_dir=str(config.get("reports_dir", "reports")),
         scenarios=scenarios,
-        settings=dict(config.get(paper.slug) or {}),
+        settings=dict(settings or {}),
     )
+
+
+def validate_scenarios(paper: Paper, names: Sequence[str], directory: str | Path) -> None:
+    """Load (and so validate) the scenarios ``<directory>/<name>.yaml`` of ``paper``; the first
+    bad file raises its ConfigError (naming the file), before any job runs."""
+    for name in names:
+        paper.load_scenario(Path(directory) / f"{name}.yaml")

@@ -6,11 +6,10 @@ every one, and validates them all when it is parsed, so a bad file stops it befo
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-__all__ = ["scenario_names", "validate_all", "decisions_with_values", "whole_multiple"]
+__all__ = ["scenario_names", "decisions_with_values", "whole_multiple"]
 
 
 def scenario_names(directory: str | Path) -> list[str]:
@@ -19,12 +18,6 @@ def scenario_names(directory: str | Path) -> list[str]:
     if not names:
         raise ValueError(f"{directory}: no scenario files (*.yaml) found")
     return names
-
-
-def validate_all(names: list[str], directory: str | Path, load: Callable[[Path], Any]) -> None:
-    """Load (and so validate) every named scenario; the first bad file raises its ConfigError."""
-    for name in names:
-        load(Path(directory) / f"{name}.yaml")
 
 
 def decisions_with_values(raw: dict[str, Any], path: str | Path) -> list[dict[str, Any]]:

@@ -24,3 +24,8 @@ def results_repo(request) -> Path:
     if have_results(ROOT):
         return ROOT
     return request.getfixturevalue("workflow_run")
+
+
+#: tests/synthetic_paper/ is a paper plug-in laid out as in the repository (copied into a copy of
+#: the repository by tests/test_synthetic_paper.py), not test modules.
+collect_ignore = ["synthetic_paper"]

@@ -62,11 +62,14 @@ def test_decision_must_name_a_real_field(raw, tmp_path):
 
 
 def test_every_shipped_scenario_is_valid():
-    from pipeline.altimeter_attitude.workflow import scenarios, validate_scenarios
+    from pipeline.altimeter_attitude.paper import PAPER
+    from pipeline.registry import validate_scenarios
+    from pipeline.scenarios import scenario_names
 
-    names = scenarios()
+    directory = "config/scenarios/altimeter_attitude"
+    names = scenario_names(directory)
     assert {"paper", "gentle_cruise", "harder_maneuvers"} <= set(names)
-    validate_scenarios(names)
+    validate_scenarios(PAPER, names, directory)
 
 
 def test_malformed_published_file(tmp_path):

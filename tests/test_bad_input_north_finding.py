@@ -17,8 +17,9 @@ import yaml
 
 from pipeline.config import ConfigError
 from pipeline.north_finding import readings as rd
+from pipeline.north_finding.paper import PAPER as NF_PAPER
 from pipeline.north_finding.scenario import ROOT, load_scenario
-from pipeline.north_finding.workflow import validate_scenarios
+from pipeline.registry import validate_scenarios
 
 PAPER = ROOT / "config" / "scenarios" / "north_finding" / "paper.yaml"
 EXAMPLE_CSV = ROOT / "config" / "scenarios" / "north_finding" / "data" / "example_readings.csv"
@@ -221,9 +222,9 @@ def test_validate_scenarios_refuses_a_bad_file(tmp_path):
     bad["site"]["lat_deg"] = 91
     _write(tmp_path / "a_good.yaml", good)
     _write(tmp_path / "b_bad.yaml", bad)
-    validate_scenarios(["a_good"], tmp_path)
+    validate_scenarios(NF_PAPER, ["a_good"], tmp_path)
     with pytest.raises(ConfigError) as info:
-        validate_scenarios(["a_good", "b_bad"], tmp_path)
+        validate_scenarios(NF_PAPER, ["a_good", "b_bad"], tmp_path)
     assert "b_bad.yaml" in str(info.value) and "site.lat_deg" in str(info.value)
 
 

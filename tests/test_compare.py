@@ -21,6 +21,7 @@ from pipeline.compare import (
     run,
     verdicts,
 )
+from pipeline.north_finding import columns as nf_columns
 
 REPO = Path(__file__).resolve().parents[1]
 PUBLISHED = REPO / "config" / "published" / "north_finding.yaml"
@@ -81,7 +82,7 @@ def estimates(rows: list[tuple[str, str, str, float, float]]) -> pd.DataFrame:
         }
         for s, m, q, t, e in rows
     ]
-    return pd.DataFrame(out, columns=columns.ESTIMATE_COLUMNS)
+    return pd.DataFrame(out, columns=nf_columns.ESTIMATE_COLUMNS)
 
 
 def trials(spec: dict[tuple[str, str], tuple[float, np.ndarray]]) -> pd.DataFrame:
@@ -101,8 +102,8 @@ def trials(spec: dict[tuple[str, str], tuple[float, np.ndarray]]) -> pd.DataFram
             )
         )
     if not frames:
-        return pd.DataFrame(columns=columns.MC_TRIAL_COLUMNS)
-    return pd.concat(frames, ignore_index=True)[columns.MC_TRIAL_COLUMNS]
+        return pd.DataFrame(columns=nf_columns.MC_TRIAL_COLUMNS)
+    return pd.concat(frames, ignore_index=True)[nf_columns.MC_TRIAL_COLUMNS]
 
 
 def budget(rows: list[tuple[str, str, str, float, float]]) -> pd.DataFrame:
@@ -111,7 +112,7 @@ def budget(rows: list[tuple[str, str, str, float, float]]) -> pd.DataFrame:
         {"method": m, "quantity": q, "source": s, "error": e, "error_pct": 100.0 * e / abs(t)}
         for m, q, s, t, e in rows
     ]
-    return pd.DataFrame(out, columns=columns.ERROR_BUDGET_COLUMNS)
+    return pd.DataFrame(out, columns=nf_columns.ERROR_BUDGET_COLUMNS)
 
 
 EMPTY_TRIALS = trials({})
@@ -576,12 +577,12 @@ def test_real_published_numbers_match_the_seed_tables() -> None:
 def test_schema_enums_match_columns() -> None:
     schema = json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))
     defs = schema["$defs"]
-    assert tuple(defs["method"]["enum"]) == columns.METHODS
-    assert tuple(defs["quantity"]["enum"]) == columns.QUANTITIES
-    assert tuple(defs["item"]["properties"]["sensor"]["enum"]) == columns.SENSORS
+    assert tuple(defs["method"]["enum"]) == nf_columns.METHODS
+    assert tuple(defs["quantity"]["enum"]) == nf_columns.QUANTITIES
+    assert tuple(defs["item"]["properties"]["sensor"]["enum"]) == nf_columns.SENSORS
     assert set(defs["item"]["properties"]["kind"]["enum"]) == set(columns.VERDICT_KINDS) - {"claim"}
     dominant = defs["predicate"]["allOf"][2]["then"]["properties"]["expect"]["enum"]
-    assert set(dominant) == set(columns.ERROR_SOURCES) - {"all_deterministic"}
+    assert set(dominant) == set(nf_columns.ERROR_SOURCES) - {"all_deterministic"}
 
 
 # --------------------------------------------------------------------------------------------

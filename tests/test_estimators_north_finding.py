@@ -32,8 +32,8 @@ import yaml
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from pipeline import columns as col
 from pipeline.generated import north_finding as gen
+from pipeline.north_finding import columns as col
 from pipeline.north_finding import estimators as est
 from pipeline.north_finding import readings as rd
 from pipeline.north_finding.run import run_scenario

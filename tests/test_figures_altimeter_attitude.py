@@ -9,9 +9,7 @@ valid non-blank images, and that writing twice gives byte-identical files.
 from __future__ import annotations
 
 import json
-import runpy
 from pathlib import Path
-from types import SimpleNamespace
 
 import matplotlib.image as mpimg
 import numpy as np
@@ -20,15 +18,15 @@ import pytest
 from matplotlib.text import Text
 
 from pipeline.altimeter_attitude import figures as F
-from pipeline.altimeter_attitude.workflow import FIGURES as WORKFLOW_FIGURES
-from pipeline.altimeter_attitude.workflow import SWEEP_FIGURE as WORKFLOW_SWEEP_FIGURE
-from pipeline.columns import (
+from pipeline.altimeter_attitude.columns import (
     ALTIMETER_FILTERS,
     RMS_SUMMARY_COLUMNS,
     SWEEP_COLUMNS,
     TIMESERIES_COLUMNS,
     TRUTH_COLUMNS,
 )
+from pipeline.altimeter_attitude.workflow import FIGURES as WORKFLOW_FIGURES
+from pipeline.altimeter_attitude.workflow import SWEEP_FIGURE as WORKFLOW_SWEEP_FIGURE
 from pipeline.config import load_yaml
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -422,25 +420,27 @@ def test_sweep_figure_maps_the_sweep_rows(tmp_path):
     ]
 
 
-def test_snakemake_script_writes_exactly_its_outputs(scenario_dir, tmp_path):
-    names = ["fig2_third_row.png", "fig7_lkf_rms_error.png"]
-    names += [n.replace(".png", ".svg") for n in names]
-    out = [str(tmp_path / "figures" / n) for n in names]
-    log = tmp_path / "figures.log"
-    snakemake = SimpleNamespace(
-        input=SimpleNamespace(
-            truth=str(scenario_dir / "truth.csv"),
-            timeseries=str(scenario_dir / "timeseries.csv"),
-            published=str(ROOT / "config/published/altimeter_attitude.yaml"),
-        ),
-        output=out,
-        log=[str(log)],
-    )
-    runpy.run_path(
-        str(ROOT / "pipeline/scripts/aa_figures.py"), init_globals={"snakemake": snakemake}
-    )
-    assert sorted(p.name for p in (tmp_path / "figures").iterdir()) == sorted(names)
-    assert "fig7_lkf_rms_error.png" in log.read_text()
+def test_figures_step_writes_exactly_its_outputs(scenario_dir, tmp_path):
+    """The workflow's figures step writes the declared PNG and SVG files and nothing else."""
+    from pipeline.altimeter_attitude.steps import figures
+
+    pngs = ["fig2_third_row.png", "fig7_lkf_rms_error.png"]
+    out_dir = tmp_path / "figures"
+    outputs = {
+        "png": [str(out_dir / n) for n in pngs],
+        "svg": [str(out_dir / n.replace(".png", ".svg")) for n in pngs],
+    }
+    inputs = {
+        "truth": str(scenario_dir / "truth.csv"),
+        "timeseries": str(scenario_dir / "timeseries.csv"),
+        "published": str(ROOT / "config/published/altimeter_attitude.yaml"),
+    }
+    figures(inputs, outputs, {}, print)
+    names = sorted(p.name for p in out_dir.iterdir())
+    assert names == sorted(Path(p).name for p in [*outputs["png"], *outputs["svg"]])
+    outputs["png"].append(str(out_dir / "fig8_lkf_c_rms.png"))  # declared, but not asked for
+    with pytest.raises(ValueError, match="declared"):
+        figures(inputs, outputs, {}, print)
 
 
 def test_unknown_figure_name_and_bad_published_file(scenario_dir, tmp_path, capsys):

@@ -8,9 +8,9 @@ import pandas as pd
 import pytest
 
 from pipeline.altimeter_attitude import flightlog, linear_kf, metrics
+from pipeline.altimeter_attitude.columns import FLIGHTLOG_OUTPUT_COLUMNS
 from pipeline.altimeter_attitude.scenario import build_scenario, load_scenario
 from pipeline.altimeter_attitude.sensors import simulate_inputs
-from pipeline.columns import FLIGHTLOG_OUTPUT_COLUMNS
 
 
 @pytest.fixture(scope="module")

@@ -11,30 +11,27 @@ from __future__ import annotations
 import json
 import math
 import re
-import runpy
 import shutil
-import sys
 from collections import Counter
 from html.parser import HTMLParser
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 import pandas as pd
 import pytest
 from matplotlib.figure import Figure
 
-from pipeline.altimeter_attitude.scenario import load_scenario
-from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE, scenarios
-from pipeline.columns import (
+from pipeline.altimeter_attitude.columns import (
     ALTIMETER_FILTERS,
-    AUDIT_COLUMNS,
     RMS_SUMMARY_COLUMNS,
     SWEEP_COLUMNS,
-    VERDICT_COLUMNS,
 )
+from pipeline.altimeter_attitude.scenario import load_scenario
+from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
+from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
 from pipeline.report import altimeter_attitude as R
 from pipeline.report import html as H
+from pipeline.scenarios import scenario_names
 
 REPO = Path(__file__).resolve().parents[1]
 REAL = REPO / "results" / "altimeter_attitude"
@@ -134,7 +131,7 @@ def make_inputs(root: Path, *, figures: bool = True, audit: bool = True) -> dict
     rng = np.random.default_rng(7)
     results = root / "results" / "altimeter_attitude"
     results.mkdir(parents=True)
-    names = scenarios(SCEN_DIR)
+    names = scenario_names(SCEN_DIR)
     for f in ("verdicts.csv", "sweep.csv"):
         if (REAL / f).is_file():
             shutil.copy(REAL / f, results / f)
@@ -444,28 +441,24 @@ def test_missing_verdicts_raise(tmp_path):
     assert not paths["out"].exists()
 
 
-def test_snakemake_script(tmp_path, monkeypatch):
-    monkeypatch.chdir(REPO)  # the script names the scenario directory relative to the repo
+def test_page_step(tmp_path, monkeypatch):
+    """The workflow's page step (pipeline.altimeter_attitude.steps.page) with its named inputs."""
+    from pipeline.altimeter_attitude.steps import page
+
+    monkeypatch.chdir(REPO)  # the step names the scenario directory relative to the repo
     paths = make_inputs(tmp_path)
     out = tmp_path / "smk" / "altimeter_attitude.html"
-    log = tmp_path / "report.log"
-    smk = SimpleNamespace(
-        input=SimpleNamespace(
-            audit=str(paths["results"] / "equation_audit.csv"),
-            verdicts=str(paths["results"] / "verdicts.csv"),
-            summaries=[str(p) for p in paths["summaries"]],
-            sweep=str(paths["results"] / "sweep.csv"),
-            figures=[str(paths["figures"] / f) for f in [*FIGURES, SWEEP_FIGURE]],
-        ),
-        output=[str(out)],
-        log=[str(log)],
-        config={"altimeter_attitude": {"published_scenario": "paper"}},
-    )
-    stderr = sys.stderr
-    try:
-        runpy.run_path(str(REPO / "pipeline/scripts/aa_report.py"), init_globals={"snakemake": smk})
-    finally:
-        sys.stderr = stderr
+    said = []
+    inputs = {
+        "audit": str(paths["results"] / "equation_audit.csv"),
+        "verdicts": str(paths["results"] / "verdicts.csv"),
+        "summaries": [str(p) for p in paths["summaries"]],
+        "sweep": str(paths["results"] / "sweep.csv"),
+        "figures": [str(paths["figures"] / f) for f in [*FIGURES, SWEEP_FIGURE]],
+        "scenario_files": sorted(str(p) for p in SCEN_DIR.glob("*.yaml")),
+    }
+    params = {"published_scenario": "paper"}
+    page(inputs, {"page": str(out)}, params, said.append)
     text = out.read_text(encoding="utf-8")
     assert text.count("data:image/png;base64,") == len(FIGURES) + 1
-    assert "wrote" in log.read_text(encoding="utf-8")
+    assert said == [f"wrote {out}"]

@@ -23,8 +23,9 @@ import pandas as pd
 import pytest
 import yaml
 
-from pipeline.columns import (
-    AUDIT_COLUMNS,
+from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS, VERDICTS
+from pipeline.north_finding import figures as F
+from pipeline.north_finding.columns import (
     ERROR_BUDGET_COLUMNS,
     ERROR_SOURCES,
     ESTIMATE_COLUMNS,
@@ -32,10 +33,7 @@ from pipeline.columns import (
     MC_TRIAL_COLUMNS,
     METHOD_QUANTITIES,
     SENSITIVITY_COLUMNS,
-    VERDICT_COLUMNS,
-    VERDICTS,
 )
-from pipeline.north_finding import figures as F
 from pipeline.report import html as H
 from pipeline.report import north_finding as R
 

@@ -7,12 +7,12 @@ import pandas as pd
 import pytest
 
 from pipeline.altimeter_attitude import verdicts
-from pipeline.columns import (
+from pipeline.altimeter_attitude.columns import (
     RMS_SUMMARY_COLUMNS,
     RUN_RMS_COLUMNS,
     TIMESERIES_COLUMNS,
-    VERDICT_COLUMNS,
 )
+from pipeline.columns import VERDICT_COLUMNS
 
 FILTERS = ("linear_kf", "linear_kf_no_gamma", "ukf", "ekf", "gyro_only", "accel_leveling")
 

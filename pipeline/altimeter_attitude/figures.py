@@ -47,14 +47,14 @@ from matplotlib.ticker import (  # noqa: E402
     NullFormatter,
 )
 
-from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
-from pipeline.columns import (  # noqa: E402
+from pipeline.altimeter_attitude.columns import (  # noqa: E402
     ALTIMETER_FILTERS,
     RMS_SUMMARY_COLUMNS,
     SWEEP_COLUMNS,
     TIMESERIES_COLUMNS,
     TRUTH_COLUMNS,
 )
+from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
 from pipeline.figure_files import write_png_svg  # noqa: E402
 
 __all__ = [

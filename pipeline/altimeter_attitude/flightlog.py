@@ -37,10 +37,10 @@ import numpy as np
 import pandas as pd
 
 from pipeline.altimeter_attitude import complementary, euler_filters, linear_kf
+from pipeline.altimeter_attitude.columns import FLIGHTLOG_OUTPUT_COLUMNS
 from pipeline.altimeter_attitude.estimates import Estimates
 from pipeline.altimeter_attitude.sensors import InitialSpec, Inputs, SensorSpec
 from pipeline.atomic import write_csv
-from pipeline.columns import FLIGHTLOG_OUTPUT_COLUMNS
 from pipeline.generated import altimeter_attitude as gen
 
 __all__ = ["FlightLogError", "read_log", "run_log", "main", "FILTERS"]

@@ -12,9 +12,13 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from pipeline.altimeter_attitude.columns import (
+    RMS_SUMMARY_COLUMNS,
+    RUN_RMS_COLUMNS,
+    TIMESERIES_COLUMNS,
+)
 from pipeline.altimeter_attitude.estimates import Estimates
 from pipeline.altimeter_attitude.trajectory import Truth
-from pipeline.columns import RMS_SUMMARY_COLUMNS, RUN_RMS_COLUMNS, TIMESERIES_COLUMNS
 
 __all__ = ["angle_errors", "summary_row", "run_rms_frame", "timeseries_frame", "nees_bounds"]
 

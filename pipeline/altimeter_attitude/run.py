@@ -38,18 +38,18 @@ import numpy as np
 import pandas as pd
 
 from pipeline.altimeter_attitude import complementary, euler_filters, linear_kf, metrics
-from pipeline.altimeter_attitude.estimates import Estimates
-from pipeline.altimeter_attitude.scenario import ROOT, Scenario, load_scenario
-from pipeline.altimeter_attitude.sensors import Inputs, concat_inputs, simulate_inputs
-from pipeline.altimeter_attitude.trajectory import load_factor
-from pipeline.atomic import write_csv, write_json
-from pipeline.columns import (
+from pipeline.altimeter_attitude.columns import (
     ALTIMETER_FILTERS,
     RMS_SUMMARY_COLUMNS,
     RUN_RMS_COLUMNS,
     TIMESERIES_COLUMNS,
     TRUTH_COLUMNS,
 )
+from pipeline.altimeter_attitude.estimates import Estimates
+from pipeline.altimeter_attitude.scenario import ROOT, Scenario, load_scenario
+from pipeline.altimeter_attitude.sensors import Inputs, concat_inputs, simulate_inputs
+from pipeline.altimeter_attitude.trajectory import load_factor
+from pipeline.atomic import write_csv, write_json
 
 __all__ = ["run_filters", "simulate", "truth_frame", "run_scenario", "main"]
 

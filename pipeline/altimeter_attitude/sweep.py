@@ -20,11 +20,11 @@ from typing import Any
 import pandas as pd
 
 from pipeline.altimeter_attitude import metrics, run
+from pipeline.altimeter_attitude.columns import SWEEP_COLUMNS
 from pipeline.altimeter_attitude.estimates import Estimates
 from pipeline.altimeter_attitude.scenario import Scenario, build_scenario, load_scenario
 from pipeline.altimeter_attitude.sensors import concat_inputs, simulate_inputs
 from pipeline.atomic import write_csv
-from pipeline.columns import SWEEP_COLUMNS
 from pipeline.config import ConfigError
 
 __all__ = ["PARAMETERS", "variant", "run_sweep", "main"]

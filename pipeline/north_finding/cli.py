@@ -25,9 +25,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from pipeline import columns as col
 from pipeline.atomic import write_atomic, write_csv
 from pipeline.config import ConfigError
+from pipeline.north_finding import columns as col
 from pipeline.north_finding import readings as rd
 from pipeline.north_finding.run import _readings, scenario_key
 from pipeline.north_finding.scenario import build_scenario, load_scenario

@@ -53,7 +53,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from pipeline import figure_files
-from pipeline.columns import (
+from pipeline.north_finding.columns import (
     AZIMUTH_METHODS,
     ESTIMATE_COLUMNS,
     LEVELING_METHODS,

@@ -7,8 +7,11 @@ gyro on a turntable (methods L1-L5, A1-A6; Tables 1-12, Figs. 1-5).
 
 from __future__ import annotations
 
-from pipeline.north_finding.scenario import load_scenario
-from pipeline.paper import FigureSpec, Paper
+from collections.abc import Callable
+from typing import Any
+
+from pipeline.north_finding.scenario import load_scenario, scenario_data_files
+from pipeline.paper import Context, FigureSpec, Paper, Step
 
 __all__ = ["PAPER", "TITLE", "CITATION", "FIGURE_CAPTIONS"]
 
@@ -53,13 +56,101 @@ FIGURE_CAPTIONS: dict[str, str] = {
     ),
 }
 
+# --------------------------------------------------------------------------- workflow steps
+#: what the simulate step writes per scenario (results/north_finding/<scenario>/)
+SCENARIO_SCHEMA = "config/schemas/north_finding_scenario.schema.json"
+SCENARIO_FILES = (
+    "estimates.csv",
+    "mc_trials.csv",
+    "mc_summary.csv",
+    "error_budget.csv",
+    "sensitivity.csv",
+    "provenance.json",
+)
+
+
+def _published(ctx: Context, name: str) -> str:
+    """A result file of the scenario the published tables are compared with."""
+    return f"{ctx.results}/{ctx.settings['published_scenario']}/{name}"
+
+
+def _figures(ctx: Context) -> dict[str, list[str]]:
+    return {
+        "png": [ctx.figure(f.file) for f in PAPER_FIGURES],
+        "svg": [ctx.figure(f.svg) for f in PAPER_FIGURES],
+    }
+
+
+def _data_files(ctx: Context) -> Callable[[Any], list[str]]:
+    """Input function: the readings CSV a scenario of ``type: readings`` reads."""
+    return lambda wildcards: scenario_data_files(ctx.scenario_file(wildcards.scenario))
+
+
+PAPER_FIGURES = tuple(
+    FigureSpec(f"{stem}.png", number if number <= 5 else None, caption)
+    for number, (stem, caption) in enumerate(FIGURE_CAPTIONS.items(), 1)
+)
+STEPS = (
+    Step(
+        "simulate",
+        "pipeline.north_finding.steps:simulate",
+        per_scenario=True,
+        inputs=lambda ctx: {
+            "scenario": ctx.scenario_file("{scenario}"),
+            "schema": SCENARIO_SCHEMA,
+            "codegen": f"{ctx.results}/codegen_check.txt",
+            "data": _data_files(ctx),
+        },
+        outputs=lambda ctx: {
+            f.split(".")[0]: f"{ctx.results}/{{scenario}}/{f}" for f in SCENARIO_FILES
+        },
+    ),
+    Step(
+        "verdicts",
+        "pipeline.north_finding.steps:verdicts",
+        inputs=lambda ctx: {
+            "published": ctx.published,
+            "schema": "config/schemas/published.schema.json",
+            "estimates": _published(ctx, "estimates.csv"),
+            "mc_trials": _published(ctx, "mc_trials.csv"),
+            "error_budget": _published(ctx, "error_budget.csv"),
+        },
+        outputs=lambda ctx: {"verdicts": f"{ctx.results}/verdicts.csv"},
+        report={"verdicts": ("Verdicts", "verdicts")},
+    ),
+    Step(
+        "figures",
+        "pipeline.north_finding.steps:figures",
+        inputs=lambda ctx: {
+            "published": ctx.published,
+            **{n: _published(ctx, f"{n}.csv") for n in ("estimates", "mc_trials", "sensitivity")},
+            "provenance": _published(ctx, "provenance.json"),
+        },
+        outputs=_figures,
+    ),
+    Step(
+        "report",
+        "pipeline.north_finding.steps:page",
+        inputs=lambda ctx: {
+            "audit": f"{ctx.results}/equation_audit.csv",
+            "verdicts": f"{ctx.results}/verdicts.csv",
+            "published": ctx.published,
+            "scenarios": [f for name in SCENARIO_FILES for f in ctx.per_scenario(name)],
+            "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
+            "scenario_schema": SCENARIO_SCHEMA,
+            "figures": _figures(ctx)["png"],
+        },
+        outputs=lambda ctx: {"page": ctx.page},
+        report={"page": ("Pages", "page")},
+    ),
+)
+
 PAPER = Paper(
     slug="north_finding",
     title=TITLE,
     citation=CITATION,
     load_scenario=load_scenario,
-    figures=tuple(
-        FigureSpec(f"{stem}.png", number if number <= 5 else None, caption)
-        for number, (stem, caption) in enumerate(FIGURE_CAPTIONS.items(), 1)
-    ),
+    figures=PAPER_FIGURES,
+    steps=STEPS,
+    settings_schema="north_finding_config",
 )

@@ -30,8 +30,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from pipeline import columns as col
 from pipeline.atomic import write_csv, write_json
+from pipeline.north_finding import columns as col
 from pipeline.north_finding import estimators as est
 from pipeline.north_finding import readings as rd
 from pipeline.north_finding.scenario import ROOT, Scenario, load_scenario

@@ -17,7 +17,14 @@ import numpy as np
 from pipeline.config import ConfigError, load_schema, load_yaml, sha256_of, validate
 from pipeline.scenarios import decisions_with_values
 
-__all__ = ["Scenario", "load_scenario", "build_scenario", "POSITION_NEEDS", "ROOT"]
+__all__ = [
+    "Scenario",
+    "load_scenario",
+    "build_scenario",
+    "POSITION_NEEDS",
+    "ROOT",
+    "scenario_data_files",
+]
 
 ROOT = Path(__file__).resolve().parents[2]
 ARCSEC = np.pi / (180 * 3600)
@@ -201,3 +208,12 @@ def _check_semantics(sc: Scenario) -> None:
             raise ConfigError(
                 f"{sc.path}: readings_csv = {sc.raw.get('readings_csv')!r}: file not found"
             )
+
+
+def scenario_data_files(path: str | Path) -> list[str]:
+    """The data files a scenario reads besides itself (its ``readings_csv``), as written in it
+    (paths relative to the repository root): inputs of the step that runs it."""
+    raw = load_yaml(path)
+    if isinstance(raw, dict) and isinstance(raw.get("readings_csv"), str):
+        return [raw["readings_csv"]]
+    return []

@@ -7,7 +7,7 @@ position-independent algorithm under gyro drift (eqs. 28-36, Table 2; Figs. 5-8)
 
 from __future__ import annotations
 
-from pipeline.paper import FigureSpec, Paper
+from pipeline.paper import Context, FigureSpec, Paper, Step
 from pipeline.platform_drift.scenario import load_scenario
 
 __all__ = ["PAPER", "TITLE", "CITATION"]
@@ -21,20 +21,113 @@ CITATION = (
     "English abstract, accepted 1397 (2018); the journal's name is not in the seed text"
 )
 
+FIGURES = (
+    FigureSpec("fig5_stationary.png", 5, "Fig. 5: stationary vehicle"),
+    FigureSpec("fig6_latitude_change.png", 6, "Fig. 6: large latitude change"),
+    FigureSpec("fig7_longitude_change.png", 7, "Fig. 7: large longitude change"),
+    FigureSpec("fig8_lat_lon_change.png", 8, "Fig. 8: large latitude and longitude change"),
+    FigureSpec(
+        "fig9_latitude.png",
+        None,
+        "Extra fig. 9 (not in the paper): position error after 2 h against latitude",
+    ),
+)
+
+
+# --------------------------------------------------------------------------- workflow steps
+#: the scenario the latitude sweep (Extra fig. 9) varies and the notebook reads
+SWEEP_SCENARIO = "stationary"
+SCENARIO_SCHEMA = "config/schemas/platform_drift_scenario.schema.json"
+PUBLISHED_SCHEMA = "config/schemas/published_platform_drift.schema.json"
+SCENARIO_CSVS = ("errors", "errors_diagnostic", "errors_long", "errors_long_diagnostic")
+
+
+def _figure_pngs(ctx: Context) -> list[str]:
+    return [ctx.figure(f.file) for f in FIGURES if f.in_paper]
+
+
+STEPS = (
+    Step(
+        "simulate",
+        "pipeline.platform_drift.steps:simulate",
+        per_scenario=True,
+        inputs=lambda ctx: {
+            "scenario": ctx.scenario_file("{scenario}"),
+            "schema": SCENARIO_SCHEMA,
+            "codegen": f"{ctx.results}/codegen_check.txt",
+        },
+        outputs=lambda ctx: {
+            **{n: f"{ctx.results}/{{scenario}}/{n}.csv" for n in SCENARIO_CSVS},
+            "summary": f"{ctx.results}/{{scenario}}/summary.csv",
+            "provenance": f"{ctx.results}/{{scenario}}/provenance.json",
+        },
+        report={"summary": ("Scenario summaries", "scenario_summary")},
+    ),
+    Step(
+        "verdicts",
+        "pipeline.platform_drift.steps:verdicts",
+        inputs=lambda ctx: {
+            "published": ctx.published,
+            "schema": PUBLISHED_SCHEMA,
+            "errors": ctx.per_scenario("errors.csv"),
+            "errors_long": ctx.per_scenario("errors_long.csv"),
+        },
+        outputs=lambda ctx: {"verdicts": f"{ctx.results}/verdicts.csv"},
+        report={"verdicts": ("Verdicts", "verdicts")},
+    ),
+    Step(
+        "figures",
+        "pipeline.platform_drift.steps:figures",
+        inputs=lambda ctx: {
+            "published": ctx.published,
+            "published_schema": PUBLISHED_SCHEMA,
+            "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
+            "scenario_schema": SCENARIO_SCHEMA,
+            "errors": ctx.per_scenario("errors.csv"),
+            "diagnostic": ctx.per_scenario("errors_diagnostic.csv"),
+        },
+        outputs=lambda ctx: {
+            "png": _figure_pngs(ctx),
+            "svg": [ctx.figure(f.svg) for f in FIGURES if f.in_paper],
+        },
+    ),
+    Step(
+        "latitude_sweep",
+        "pipeline.platform_drift.steps:latitude_sweep",
+        inputs=lambda ctx: {
+            "scenario": ctx.scenario_file(SWEEP_SCENARIO),
+            "schema": SCENARIO_SCHEMA,
+            "codegen": f"{ctx.results}/codegen_check.txt",
+        },
+        outputs=lambda ctx: {
+            "csv": f"{ctx.results}/latitude_sweep.csv",
+            "png": ctx.figure("fig9_latitude.png"),
+            "svg": ctx.figure("fig9_latitude.svg"),
+        },
+    ),
+    Step(
+        "report",
+        "pipeline.platform_drift.steps:page",
+        inputs=lambda ctx: {
+            "audit": f"{ctx.results}/equation_audit.csv",
+            "verdicts": f"{ctx.results}/verdicts.csv",
+            "summaries": ctx.per_scenario("summary.csv"),
+            "provenance": ctx.per_scenario("provenance.json"),
+            "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
+            "scenario_schema": SCENARIO_SCHEMA,
+            "figures": [ctx.figure(f.file) for f in FIGURES],
+        },
+        outputs=lambda ctx: {"page": ctx.page},
+        report={"page": ("Pages", "page")},
+    ),
+)
+
 PAPER = Paper(
     slug="platform_drift",
     title=TITLE,
     citation=CITATION,
     load_scenario=load_scenario,
-    figures=(
-        FigureSpec("fig5_stationary.png", 5, "Fig. 5: stationary vehicle"),
-        FigureSpec("fig6_latitude_change.png", 6, "Fig. 6: large latitude change"),
-        FigureSpec("fig7_longitude_change.png", 7, "Fig. 7: large longitude change"),
-        FigureSpec("fig8_lat_lon_change.png", 8, "Fig. 8: large latitude and longitude change"),
-        FigureSpec(
-            "fig9_latitude.png",
-            None,
-            "Extra fig. 9 (not in the paper): position error after 2 h against latitude",
-        ),
-    ),
+    figures=FIGURES,
+    steps=STEPS,
+    notebook_inputs=lambda ctx: [f"{ctx.results}/{SWEEP_SCENARIO}/errors.csv"],
 )

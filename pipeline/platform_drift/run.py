@@ -46,10 +46,10 @@ import numpy as np
 import pandas as pd
 
 from pipeline.atomic import write_csv, write_json
-from pipeline.columns import DRIFT_SUMMARY_COLUMNS, ERRORS_COLUMNS
 from pipeline.platform_drift import analytic
 from pipeline.platform_drift import platform as pf
 from pipeline.platform_drift import strapdown as sd
+from pipeline.platform_drift.columns import DRIFT_SUMMARY_COLUMNS, ERRORS_COLUMNS
 from pipeline.platform_drift.scenario import ROOT, Scenario, load_scenario
 from pipeline.platform_drift.trajectory import haversine
 

@@ -28,18 +28,16 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from pipeline.altimeter_attitude.columns import (
+    ALTIMETER_FILTERS,
+    RMS_SUMMARY_COLUMNS,
+    SWEEP_COLUMNS,
+)
 from pipeline.altimeter_attitude.paper import CITATION as PAPER_CITATION
 from pipeline.altimeter_attitude.paper import TITLE as PAPER_TITLE
 from pipeline.altimeter_attitude.scenario import load_scenario
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
-from pipeline.columns import (
-    ALTIMETER_FILTERS,
-    AUDIT_COLUMNS,
-    AUDIT_STATUSES,
-    RMS_SUMMARY_COLUMNS,
-    SWEEP_COLUMNS,
-    VERDICT_COLUMNS,
-)
+from pipeline.columns import AUDIT_COLUMNS, AUDIT_STATUSES, VERDICT_COLUMNS
 from pipeline.report import html as H
 
 __all__ = [

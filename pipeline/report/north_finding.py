@@ -37,9 +37,8 @@ import numpy as np
 import pandas as pd
 import yaml
 
-from pipeline.columns import (
-    AUDIT_COLUMNS,
-    AUDIT_STATUSES,
+from pipeline.columns import AUDIT_COLUMNS, AUDIT_STATUSES, VERDICT_COLUMNS, VERDICT_KINDS, VERDICTS
+from pipeline.north_finding.columns import (
     AZIMUTH_METHODS,
     ERROR_BUDGET_COLUMNS,
     ERROR_SOURCES,
@@ -50,9 +49,6 @@ from pipeline.columns import (
     QUANTITIES,
     SENSITIVITY_COLUMNS,
     SENSORS,
-    VERDICT_COLUMNS,
-    VERDICT_KINDS,
-    VERDICTS,
 )
 from pipeline.north_finding.figures import FIGURE_FILES, load_published
 from pipeline.north_finding.paper import CITATION as PAPER_CITATION

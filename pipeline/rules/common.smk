@@ -1,7 +1,6 @@
-# Shared set-up: config validation, import path, the paper-independent inputs and the tags of
-# `snakemake --report reports/snakemake.html`.
+# Shared set-up: config validation, the paper registry, input functions and report tags.
+# Nothing here names a paper: every paper comes from config["papers"] through pipeline.registry.
 import os
-import re
 import sys
 from pathlib import Path
 
@@ -14,26 +13,33 @@ validate(config, "../../config/schemas/config.schema.json")
 os.environ.update(
     PYTHONPATH=os.pathsep.join(p for p in (workflow.basedir, os.getenv("PYTHONPATH", "")) if p)
 )
-
 sys.path.insert(0, workflow.basedir)
+
+from pipeline.code_inputs import module_closure, notebook_imports, script_imports  # noqa: E402
+from pipeline.registry import context, load_papers, validate_scenarios  # noqa: E402
 
 RESULTS = config["results_dir"]
 REPORTS = config["reports_dir"]
-SCHEMAS = "config/schemas"
 # The software every rule runs with, for `snakemake --sdm conda`. `make reproduce` runs the
 # rules in the hash-checked .venv built from environment.lock instead; a test keeps the pins of
 # this file equal to the lock's.
 ENV = "../envs/inertial-repro.yaml"
 # Captions of the outputs tagged for `snakemake --report` (reStructuredText, Jinja-templated).
 CAPTIONS = "../../reports/snakemake"
+SCRIPTS = "pipeline/scripts"
 
-# code every numeric rule depends on (edits rerun what they affect)
-COMMON_CODE = [
-    "pipeline/columns.py",
-    "pipeline/config.py",
-    "pipeline/atomic.py",
-    "pipeline/provenance.py",
-]
+PAPERS = load_papers(config["papers"])
+CONTEXTS = {slug: context(paper, config) for slug, paper in PAPERS.items()}
+# every scenario file is validated when the workflow is parsed, before any job runs
+for _slug, _paper in PAPERS.items():
+    validate_scenarios(_paper, CONTEXTS[_slug].scenarios, CONTEXTS[_slug].scenarios_dir)
+
+
+def code(*modules, script=None):
+    """The repository files ``modules`` (and ``script``'s imports) import, recursively: inputs
+    of a rule, so an edit to any of them reruns it."""
+    names = list(modules) + (script_imports(f"{SCRIPTS}/{script}") if script else [])
+    return module_closure(names) + ([f"{SCRIPTS}/{script}"] if script else [])
 
 
 def tagged(path, paper, subcategory, caption, **labels):
@@ -48,11 +54,74 @@ def tagged(path, paper, subcategory, caption, **labels):
     )
 
 
-def tagged_figure(path, paper, paper_figures):
-    """A figure for the Snakemake report, labelled with the paper's figure number (from the
-    file name, ``fig<N>_...``) or as a figure the paper does not have."""
+def tagged_figure(path, paper):
+    """A figure for the Snakemake report, labelled with the paper's figure number."""
     name = Path(path).name
-    m = re.match(r"fig(\d+)_", name)
-    number = int(m.group(1)) if m else None
-    figure = f"Fig. {number}" if number in paper_figures else "not in the paper"
-    return tagged(path, paper, "Figures", "figure", figure=figure, file=name)
+    return tagged(path, paper.slug, "Figures", "figure", figure=paper.figure(name).label, file=name)
+
+
+def step_outputs(paper, step):
+    """A step's named outputs; PNG figures and the outputs its ``report`` names are tagged."""
+    out = {}
+    for name, value in step.outputs(CONTEXTS[paper.slug]).items():
+        if name in step.report:
+            subcategory, caption = step.report[name]
+            labels = {"scenario": "{scenario}"} if step.per_scenario else {}
+            out[name] = tagged(value, paper.slug, subcategory, caption, **labels)
+        elif isinstance(value, list):
+            out[name] = [tagged_figure(v, paper) if _is_figure(v, paper) else v for v in value]
+        else:
+            out[name] = tagged_figure(value, paper) if _is_figure(value, paper) else value
+    return out
+
+
+def _is_figure(path, paper):
+    return path.endswith(".png") and Path(path).name in paper.figure_files
+
+
+def step_log(paper, step, kind):
+    """results/<slug>/logs/<step>[_<scenario>].log (kind "logs") or benchmarks/....tsv."""
+    suffix = "_{scenario}" if step.per_scenario else ""
+    ext = "log" if kind == "logs" else "tsv"
+    return f"{CONTEXTS[paper.slug].results}/{kind}/{step.name}{suffix}.{ext}"
+
+
+def paper_targets(slug):
+    """What the target `all` asks of one paper: its page and its executed notebook."""
+    return [CONTEXTS[slug].page, CONTEXTS[slug].notebook_html]
+
+
+def derive_code(step):
+    """Input function: the code a derive step of one paper runs (its import graph)."""
+    modules = {
+        "audit": lambda paper: code(paper.audit_module, script="equation_audit.py"),
+        "codegen": lambda paper: code(paper.generator_module, script="codegen_check.py"),
+    }[step]
+    return lambda wildcards: modules(PAPERS[wildcards.paper])
+
+
+def notebook_code(wildcards):
+    """The modules the paper's notebook imports (recursively) and the results it reads."""
+    paper = PAPERS[wildcards.paper]
+    return module_closure(notebook_imports(paper.notebook)) + list(
+        paper.notebook_inputs(CONTEXTS[paper.slug])
+    )
+
+
+def reproduction_inputs():
+    """Every file the combined report reads, per paper."""
+    named = {k: [] for k in ("audits", "math", "verdicts", "published", "scenarios")}
+    named.update({k: [] for k in ("provenance", "figures", "svg", "pages", "notebooks")})
+    for slug, paper in PAPERS.items():
+        ctx = CONTEXTS[slug]
+        named["audits"].append(f"{ctx.results}/equation_audit.csv")
+        named["math"].append(f"{ctx.results}/equation_math.json")
+        named["verdicts"].append(f"{ctx.results}/verdicts.csv")
+        named["published"].append(ctx.published)
+        named["scenarios"] += [ctx.scenario_file(s) for s in ctx.scenarios]
+        named["provenance"] += ctx.per_scenario("provenance.json")
+        named["figures"] += [ctx.figure(f.file) for f in paper.figures]
+        named["svg"] += [ctx.figure(f.svg) for f in paper.figures]
+        named["pages"].append(ctx.page)
+        named["notebooks"].append(ctx.notebook_html)
+    return named

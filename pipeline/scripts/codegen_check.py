@@ -1,5 +1,5 @@
 # Snakemake script: fail if a generated module differs from what its derivations generate.
-# params.generator: the module with source(), e.g. derivations.platform_drift.generate
+# params.generator: the module with source(), derivations.<slug>.generate
 import importlib
 import sys
 from pathlib import Path

@@ -1,4 +1,4 @@
-# Snakemake script: equation audit of one paper. params.audit: e.g. derivations.platform_drift.audit
+# Snakemake script: equation audit of one paper. params.audit: derivations.<slug>.audit
 # Writes equation_audit.csv (the contract) and equation_math.json (printed, derived and residual
 # forms as MathML and SymPy srepr, for the reports).
 import importlib

@@ -1,0 +1,77 @@
+"""Column names of the altimeter_attitude results files (units in the names), and its method/quantity names."""
+
+from __future__ import annotations
+
+# results/<slug>/<scenario>/rms_summary.csv (contract of issue 4): one row per
+# filter; RMS over runs and over time after the transient; sigma = RMS of the filter's own
+# standard deviation; nees = mean of error^2 / sigma^2 (1 for a consistent filter)
+RMS_SUMMARY_COLUMNS = [
+    "filter",
+    "roll_rms_deg",
+    "pitch_rms_deg",
+    "roll_sigma_deg",
+    "pitch_sigma_deg",
+    "nees_roll",
+    "nees_pitch",
+    "n_runs",
+]
+ALTIMETER_FILTERS = (
+    "linear_kf",  # eq. 26/31 with the Gamma (Q kron P) Gamma^T term
+    "linear_kf_no_gamma",  # the same without that term
+    "ukf",  # Euler-angle UKF (Sec. 6)
+    "ekf",  # Euler-angle EKF (the paper says it diverges)
+    "complementary",  # PI complementary filter of Fig. 1
+    "gyro_only",  # gyro propagation (eq. 14), no correction
+    "accel_leveling",  # eq. 17-b / 11 at every step (cruise assumption)
+)
+# results/<slug>/<scenario>/run_rms.csv: per Monte Carlo run and filter, the RMS
+# over time (after the transient) of the roll and pitch errors (paired comparisons of filters)
+RUN_RMS_COLUMNS = ["run", "filter", "roll_rms_deg", "pitch_rms_deg"]
+# results/<slug>/<scenario>/timeseries.csv: per filter and output time, RMS over
+# runs of the errors, of the filter's sigma, and of the normalisation error 1 - c^T c
+TIMESERIES_COLUMNS = [
+    "t_s",
+    "filter",
+    "roll_rms_deg",
+    "pitch_rms_deg",
+    "roll_sigma_deg",
+    "pitch_sigma_deg",
+    "c1_rms",
+    "c2_rms",
+    "c3_rms",
+    "norm_error_rms",
+    "nees_roll",
+    "nees_pitch",
+]
+# results/<slug>/<scenario>/truth.csv: the nominal trajectory (Figs 2-6) and the
+# sensor outputs of run 0
+TRUTH_COLUMNS = [
+    "t_s",
+    "c31",
+    "c32",
+    "c33",
+    "roll_deg",
+    "pitch_deg",
+    "yaw_deg",
+    "v_d_m_s",
+    "h_m",
+    "load_factor",
+    "gyro_x_deg_s",
+    "gyro_y_deg_s",
+    "gyro_z_deg_s",
+    "accel_x_m_s2",
+    "accel_y_m_s2",
+    "accel_z_m_s2",
+    "altimeter_m",
+]
+# results/<slug>/sweep.csv: one-at-a-time sweep around the paper scenario
+SWEEP_COLUMNS = ["parameter", "value", "filter", "roll_rms_deg", "pitch_rms_deg", "n_runs"]
+# flight-log CLI output: estimated attitude per IMU sample
+FLIGHTLOG_OUTPUT_COLUMNS = [
+    "t_s",
+    "filter",
+    "roll_deg",
+    "pitch_deg",
+    "roll_sigma_deg",
+    "pitch_sigma_deg",
+]

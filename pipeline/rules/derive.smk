@@ -1,0 +1,65 @@
+# Per paper ({paper} wildcard): the SymPy derivations checked against the printed equations
+# (equation audit) and against the committed generated code (codegen check).
+
+
+rule codegen_check:
+    input:
+        code=derive_code("codegen"),
+        generated="pipeline/generated/{paper}.py",
+    output:
+        f"{RESULTS}/{{paper}}/codegen_check.txt",
+    log:
+        f"{RESULTS}/{{paper}}/logs/codegen_check.log",
+    benchmark:
+        f"{RESULTS}/{{paper}}/benchmarks/codegen_check.tsv"
+    conda:
+        ENV
+    params:
+        generator=lambda wildcards: PAPERS[wildcards.paper].generator_module,
+    script:
+        "../scripts/codegen_check.py"
+
+
+rule audit:
+    input:
+        code=derive_code("audit"),
+    output:
+        csv=report(
+            f"{RESULTS}/{{paper}}/equation_audit.csv",
+            caption=f"{CAPTIONS}/audit.rst",
+            category="{paper}",
+            subcategory="Equation audit",
+        ),
+        math=f"{RESULTS}/{{paper}}/equation_math.json",
+    log:
+        f"{RESULTS}/{{paper}}/logs/audit.log",
+    benchmark:
+        f"{RESULTS}/{{paper}}/benchmarks/audit.tsv"
+    conda:
+        ENV
+    params:
+        audit=lambda wildcards: PAPERS[wildcards.paper].audit_module,
+    script:
+        "../scripts/equation_audit.py"
+
+
+rule notebook:
+    input:
+        notebook_code,
+        code=code(script="execute_notebook.py"),
+        notebook="notebooks/{paper}.ipynb",
+    output:
+        report(
+            f"{REPORTS}/notebooks/{{paper}}.html",
+            caption=f"{CAPTIONS}/notebook.rst",
+            category="{paper}",
+            subcategory="Pages",
+        ),
+    log:
+        f"{RESULTS}/{{paper}}/logs/notebook.log",
+    benchmark:
+        f"{RESULTS}/{{paper}}/benchmarks/notebook.tsv"
+    conda:
+        ENV
+    script:
+        "../scripts/execute_notebook.py"
