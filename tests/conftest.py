@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import importlib
+from collections.abc import Callable
+from functools import cache
 from pathlib import Path
 
 import pytest
@@ -24,6 +27,19 @@ def results_repo(request) -> Path:
     if have_results(ROOT):
         return ROOT
     return request.getfixturevalue("workflow_run")
+
+
+@pytest.fixture(scope="session")
+def generated_source() -> Callable[[str], str]:
+    """``generated_source(module)``: ``module.source()`` of a generate module (for example
+    ``derivations.<slug>.generate``), derived once per session (seconds of SymPy each) and shared
+    by the tests that compare with it."""
+
+    @cache
+    def source(module: str) -> str:
+        return importlib.import_module(module).source()
+
+    return source
 
 
 #: tests/synthetic_paper/ is a paper plug-in laid out as in the repository (copied into a copy of

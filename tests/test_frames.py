@@ -7,9 +7,6 @@ numeric DCM), at seeded random points.
 
 from __future__ import annotations
 
-import doctest
-import importlib
-
 import numpy as np
 import pytest
 import sympy as sp
@@ -177,22 +174,3 @@ def test_angular_velocity_composes_by_addition():
         m_bc, t
     )
     assert sp.simplify(lhs - rhs) == sp.zeros(3, 1)
-
-
-# --------------------------------------------------------------------------------------------
-# doctests of the derivations modules
-# --------------------------------------------------------------------------------------------
-@pytest.mark.parametrize(
-    "module",
-    [
-        "derivations.frames",
-        "derivations.checks",
-        "derivations.codegen",
-        "derivations.north_finding.leveling",
-        "derivations.north_finding.azimuth",
-    ],
-)
-def test_doctests(module):
-    result = doctest.testmod(importlib.import_module(module), verbose=False)
-    assert result.attempted > 0, f"{module} has no doctests"
-    assert result.failed == 0
