@@ -15,7 +15,7 @@ import yaml
 from pipeline.columns import (
     AUDIT_COLUMNS,
     ESTIMATE_COLUMNS,
-    VERDICT_COLUMNS,
+    VERDICT_FILE_COLUMNS,
     VERDICT_KINDS,
     VERDICTS,
 )
@@ -65,7 +65,7 @@ def test_verdicts_one_row_per_published_item_and_claim(workflow_run):
     verdicts = pd.read_csv(
         repo / "results" / "north_finding" / "verdicts.csv", dtype=str, keep_default_na=False
     )
-    assert list(verdicts.columns) == VERDICT_COLUMNS
+    assert list(verdicts.columns) == VERDICT_FILE_COLUMNS
     assert sorted(verdicts["id"]) == sorted(expected_ids)
     assert verdicts["id"].is_unique
     assert set(verdicts["kind"]) <= set(VERDICT_KINDS)
@@ -146,8 +146,8 @@ def test_altimeter_attitude_outputs(workflow_run):
         )
     )
     verdicts = pd.read_csv(results / "verdicts.csv", dtype=str, keep_default_na=False)
-    assert list(verdicts.columns) == VERDICT_COLUMNS
-    ids = [v["id"] for v in published["values"]] + [c["id"] for c in published["claims"]]
+    assert list(verdicts.columns) == VERDICT_FILE_COLUMNS
+    ids = [v["id"] for v in published["items"]] + [c["id"] for c in published["claims"]]
     assert sorted(verdicts["id"]) == sorted(ids)
     assert set(verdicts["verdict"]) <= set(VERDICTS)
     sweep = pd.read_csv(results / "sweep.csv")

@@ -114,7 +114,7 @@ rule altimeter_attitude_verdicts:
     input:
         "pipeline/altimeter_attitude/verdicts.py",
         published="config/published/altimeter_attitude.yaml",
-        schema=f"{SCHEMAS}/published_altimeter_attitude.schema.json",
+        schema=f"{SCHEMAS}/published.schema.json",
         scenario=f"config/scenarios/altimeter_attitude/{AA_PUBLISHED_SCENARIO}.yaml",
         results=expand(f"{AA}/{AA_PUBLISHED_SCENARIO}/{{f}}.csv", f=AA_FILES),
     output:

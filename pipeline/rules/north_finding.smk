@@ -95,7 +95,7 @@ rule north_finding_simulate:
 
 rule north_finding_verdicts:
     input:
-        "pipeline/compare.py",
+        "pipeline/north_finding/verdicts.py",
         published="config/published/north_finding.yaml",
         schema=f"{SCHEMAS}/published.schema.json",
         estimates=f"{NF}/{NF_PUBLISHED_SCENARIO}/estimates.csv",

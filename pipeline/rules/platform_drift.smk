@@ -103,7 +103,7 @@ rule platform_drift_verdicts:
     input:
         "pipeline/platform_drift/verdicts.py",
         published="config/published/platform_drift.yaml",
-        schema=f"{SCHEMAS}/published_platform_drift.schema.json",
+        schema=f"{SCHEMAS}/published.schema.json",
         errors=expand(f"{PD}/{{scenario}}/errors.csv", scenario=PD_SCENARIOS),
         errors_long=expand(f"{PD}/{{scenario}}/errors_long.csv", scenario=PD_SCENARIOS),
     output:
