@@ -115,6 +115,9 @@ def test_exact_stated_tolerance_on_the_value() -> None:
 def test_missing_value_is_not_checkable() -> None:
     row = judge(item(), Found(missing="no such row"))
     assert (row.verdict, row.reason) == ("not_checkable", "not checkable: no such row")
+    assert row.tolerance == "value: the printed digits of 1.5 (rounding: +-0.05; truncation: [1.5, +0.1))"  # fmt: skip
+    for it in (_approx(), _stat("50.0")):  # the stated tolerance of each kind, without a result
+        assert judge(it, Found(missing="none")).tolerance == kinds.stated_tolerance(it) != ""
 
 
 # --------------------------------------------------------------------------------------------

@@ -70,6 +70,7 @@ def test_verdicts_one_row_per_published_item_and_claim(workflow_run):
     assert verdicts["id"].is_unique
     assert set(verdicts["kind"]) <= set(VERDICT_KINDS)
     assert set(verdicts["verdict"]) <= set(VERDICTS)
+    assert (verdicts["tolerance"] != "").all() and (verdicts["reason"] != "").all()
     kinds = {i["id"]: i["kind"] for i in published["items"]}
     kinds.update({c["id"]: "claim" for c in published.get("claims", [])})
     assert dict(zip(verdicts["id"], verdicts["kind"], strict=True)) == kinds

@@ -56,6 +56,7 @@ __all__ = [
     "judge",
     "percentile_rank",
     "shown_unit",
+    "stated_tolerance",
 ]
 
 #: Percentile-rank band in which a published value is consistent with the Monte Carlo.
@@ -132,16 +133,47 @@ def _tolerance(item: Mapping[str, Any], on: str) -> Mapping[str, Any] | None:
     return tol if tol and tol.get("applies_to", "value") == on else None
 
 
+def _exact_tolerance(printed: str, tol: Mapping[str, Any] | None, what: str) -> str:
+    if tol is None:
+        return (
+            f"{what}: the printed digits of {printed} (rounding: +-{_g(half_unit(printed))}; "
+            f"truncation: [{printed}, +{_g(unit(printed))}))"
+        )
+    limit = float(tol["abs"]) if "abs" in tol else float(tol["rel"]) * abs(float(printed))
+    return f"{what}: |ours - printed| <= {_g(limit)} ({tol['reason']})"
+
+
+def stated_tolerance(item: Mapping[str, Any]) -> str:
+    """The tolerance of an item's kind as the published file states it (before any result).
+
+    >>> stated_tolerance({"kind": "exact", "quantity": "x", "value": "88"})
+    'value: the printed digits of 88 (rounding: +-0.5; truncation: [88, +1))'
+    >>> stated_tolerance({"kind": "approximate", "quantity": "x", "value": "4.5",
+    ...                   "tolerance": {"rel": 0.2, "reason": "a plot"}})
+    '+-20% of 4.5 (a plot), + 2 SE when ours is a Monte Carlo estimate'
+    """
+    kind = item["kind"]
+    if kind == "exact":
+        return "; ".join(
+            _exact_tolerance(item[field], _tolerance(item, field), what)
+            for field, what in (("value", "value"), ("error_pct", "% error"))
+            if item.get(field) is not None
+        )
+    if kind == "approximate":
+        tol, printed = item["tolerance"], item["value"]
+        share = f"{tol['rel']:.0%} of {printed}" if "rel" in tol else f"{_g(float(tol['abs']))}"
+        u = shown_unit(item)
+        return f"+-{share}{u} ({tol['reason']}), + 2 SE when ours is a Monte Carlo estimate"
+    return f"percentile rank in [{RANK_BAND[0]}, {RANK_BAND[1]}] of the Monte Carlo trials"
+
+
 def _compare(
     ours: float, printed: str, tol: Mapping[str, Any] | None, what: str
 ) -> tuple[bool, str, str]:
     """(passed, tolerance text, reason text) of one printed number of an exact item."""
+    tolerance = _exact_tolerance(printed, tol, what)
     if tol is None:
         ok, how = equals_printed(ours, printed)
-        tolerance = (
-            f"{what}: the printed digits of {printed} (rounding: +-{_g(half_unit(printed))}; "
-            f"truncation: [{printed}, +{_g(unit(printed))}))"
-        )
         reason = (
             f"{what}: ours {fmt_full(ours)} {how} to the printed {printed}"
             if ok
@@ -153,7 +185,6 @@ def _compare(
     limit = float(tol["abs"]) if "abs" in tol else float(tol["rel"]) * abs(value)
     diff = abs(ours - value)
     ok = diff <= limit + REL_SLACK * max(abs(ours), abs(value))
-    tolerance = f"{what}: |ours - printed| <= {_g(limit)} ({tol['reason']})"
     reason = f"{what}: |ours - printed| = {_g(diff)} {'<=' if ok else '>'} {_g(limit)}"
     return ok, tolerance, reason
 
@@ -162,14 +193,14 @@ def _exact(item: Mapping[str, Any], found: Found) -> Judged:
     parts: list[tuple[bool, str, str]] = []
     if item.get("value") is not None:
         if found.value is None:
-            return _missing("no reproduced value")
+            return _missing("no reproduced value", item)
         parts.append(_compare(found.value, item["value"], _tolerance(item, "value"), "value"))
         reproduced = fmt_full(found.value) + shown_unit(item)
     else:
         reproduced = "" if found.error_pct is None else f"{abs(found.error_pct):.3g} %"
     if item.get("error_pct") is not None:
         if found.error_pct is None:
-            return _missing("no reproduced % error")
+            return _missing("no reproduced % error", item)
         tol = _tolerance(item, "error_pct")
         parts.append(_compare(abs(found.error_pct), item["error_pct"], tol, "% error"))
     ok = all(p[0] for p in parts)
@@ -192,7 +223,7 @@ def _approximate(item: Mapping[str, Any], found: Found) -> Judged:
     tolerance = f"+-{share}{u}" + (f" + 2 SE ({_g(se)}) = +-{_g(allowed)}{u}" if se else "")
     tolerance += f" ({tol['reason']})"
     if found.value is None:
-        return _missing("no reproduced value")
+        return _missing("no reproduced value", item)
     ours = float(found.value)
     reproduced = found.shown or (fmt_printed_plus(ours, printed) + u)
     if not math.isfinite(ours):
@@ -218,7 +249,7 @@ def percentile_rank(samples: np.ndarray, value: float) -> float:
 
 def _statistical(item: Mapping[str, Any], found: Found) -> Judged:
     if found.samples is None or found.samples.size == 0:
-        return _missing("no Monte Carlo samples")
+        return _missing("no Monte Carlo samples", item)
     sample = np.asarray(found.samples, dtype=float)
     printed = item["value"]
     published = float(printed)
@@ -276,8 +307,8 @@ def _fmt_pct(x: float, sign: bool = False) -> str:
     return f"{x:+.{places}f}" if sign else f"{x:.{places}f}"
 
 
-def _missing(what: str) -> Judged:
-    return Judged("", "not_checkable", "", f"not checkable: {what}")
+def _missing(what: str, item: Mapping[str, Any]) -> Judged:
+    return Judged("", "not_checkable", stated_tolerance(item), f"not checkable: {what}")
 
 
 def consistency_note(item: Mapping[str, Any], truth: float | None) -> str | None:
@@ -312,7 +343,7 @@ _RULES = {"exact": _exact, "approximate": _approximate, "statistical": _statisti
 def judge(item: Mapping[str, Any], found: Found) -> Judged:
     """The verdict of one published item on what the paper package found for it."""
     if found.missing:
-        return _missing(found.missing)
+        return _missing(found.missing, item)
     judged = _RULES[item["kind"]](item, found)
     if judged.verdict not in NUMBER_VERDICTS[item["kind"]]:  # pragma: no cover (a rule's bug)
         raise AssertionError(f"{item['id']}: verdict {judged.verdict!r} for {item['kind']}")
