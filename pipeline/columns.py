@@ -14,7 +14,10 @@ AUDIT_STATUSES = ("match", "differs", "not_checkable")
 
 # results/<slug>/verdicts.csv
 VERDICT_COLUMNS = ["id", "kind", "quantity", "method", "published", "reproduced", "verdict", "note"]
-VERDICT_KINDS = ("exact", "statistical", "claim")
-# exact -> reproduced | not_reproduced; statistical -> consistent | not_reproduced;
-# claim -> upheld | not_upheld | not_checkable
+# written after the contract columns: the tolerance a verdict applied and the reason it follows
+VERDICT_EXTRA_COLUMNS = ["tolerance", "reason"]
+VERDICT_FILE_COLUMNS = VERDICT_COLUMNS + VERDICT_EXTRA_COLUMNS
+VERDICT_KINDS = ("exact", "approximate", "statistical", "claim")
+# exact, approximate -> reproduced | not_reproduced; statistical -> consistent | not_reproduced;
+# claim -> upheld | not_upheld; any kind -> not_checkable (pipeline/verdicts/kinds.py, claims.py)
 VERDICTS = ("reproduced", "consistent", "not_reproduced", "upheld", "not_upheld", "not_checkable")

@@ -34,11 +34,22 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-__all__ = ["SLUG_PATTERN", "Context", "FigureSpec", "Paper", "Step", "Paths", "StepEntry"]
+__all__ = [
+    "PUBLISHED_SCHEMA",
+    "SLUG_PATTERN",
+    "Context",
+    "FigureSpec",
+    "Paper",
+    "Step",
+    "Paths",
+    "StepEntry",
+]
 
 #: A paper's slug: a Python identifier in lower case (it names a package and a rule prefix).
 SLUG_PATTERN = re.compile(r"^[a-z][a-z0-9_]*$")
 
+#: the one schema of every paper's published values (pipeline/verdicts)
+PUBLISHED_SCHEMA = "config/schemas/published.schema.json"
 #: Named paths of a rule's inputs or outputs: a path (str) or a list of paths.
 Paths = Mapping[str, "str | list[str]"]
 #: ``entry(inputs, outputs, params, log)``: what a step runs.
@@ -93,6 +104,12 @@ class Context:
     @property
     def published(self) -> str:
         return f"config/published/{self.slug}.yaml"
+
+    @property
+    def published_inputs(self) -> dict[str, str]:
+        """The published-values file and the one schema that validates it: the inputs of
+        any step that reads the published values."""
+        return {"published": self.published, "published_schema": PUBLISHED_SCHEMA}
 
     def scenario_file(self, name: str) -> str:
         return f"{self.scenarios_dir}/{name}.yaml"

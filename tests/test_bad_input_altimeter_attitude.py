@@ -74,15 +74,20 @@ def test_every_shipped_scenario_is_valid():
 
 def test_malformed_published_file(tmp_path):
     data = load_yaml(PUBLISHED)
-    data["values"][0]["quantity"] = "yaw_rms_deg"
+    data["items"][0]["quantity"] = "yaw_rms_deg"
     path = tmp_path / "published.yaml"
     path.write_text(yaml.safe_dump(data))
-    with pytest.raises(ConfigError, match=r"values\.0\.quantity.*yaw_rms_deg"):
+    with pytest.raises(ConfigError, match=r"item 'V1\.lkf_roll' \(items\[0\]\), field 'quantity': bad value 'yaw_rms_deg'"):  # fmt: skip
         verdicts.load_published(path)
     data = load_yaml(PUBLISHED)
     data["claims"][1]["id"] = data["claims"][0]["id"]
     path.write_text(yaml.safe_dump(data))
-    with pytest.raises(ConfigError, match="duplicate ids"):
+    with pytest.raises(ConfigError, match=r"claims\[1\]\), field 'id'.*unique"):
+        verdicts.load_published(path)
+    data = load_yaml(PUBLISHED)
+    data["claims"][0]["predicate"]["alpha"] = 2.0
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ConfigError, match=r"field 'predicate\.alpha': bad value 2\.0; allowed: a number < 1"):  # fmt: skip
         verdicts.load_published(path)
 
 

@@ -358,31 +358,39 @@ def test_published_rms_of_the_config_file():
     assert F.published_rms(data) == PUBLISHED
 
 
+def _entry(**kw):
+    base = {"id": "V9.bad", "kind": "approximate", "quantity": "roll_rms_deg", "value": "0.2", "select": {"filter": "ukf"}}  # fmt: skip
+    base.update(kw)
+    return {k: v for k, v in base.items() if v is not None}
+
+
 @pytest.mark.parametrize(
     ("entry", "match"),
     [
-        ({"id": "V9.bad", "kind": "statistical", "filter": "ukf", "quantity": "roll_rms_deg"}, "V9.bad.*value"),
-        ({"id": "V9.bad", "kind": "statistical", "quantity": "roll_rms_deg", "value": 0.2}, "V9.bad.*filter"),
-        ({"kind": "statistical", "filter": "ukf", "value": 0.2}, r"values\[1\].*quantity"),
-        ({"id": "V9.bad", "kind": "statistical", "filter": "ukf", "quantity": "roll_rms_deg", "value": "0.2"}, "not a number"),
-        ({"id": "V9.bad", "kind": "statistical", "filter": "ukf", "quantity": "roll_rms_deg", "value": -1}, "> 0"),
-        ({"id": "V9.bad", "kind": "statistical", "filter": "linear_kf", "quantity": "roll_rms_deg", "value": 0.2}, "twice"),
-        ("not a mapping", r"values\[1\]"),
+        (_entry(value=None), "V9.bad.*value"),
+        (_entry(select={}), "V9.bad.*filter"),
+        ({**_entry(quantity=None), "id": None}, r"items\[1\].*quantity"),
+        (_entry(value=0.2), "not a number string"),
+        (_entry(value="abc"), "not a number string"),
+        (_entry(value="-1"), "> 0"),
+        (_entry(select={"filter": "linear_kf"}), "twice"),
+        ("not a mapping", r"items\[1\]"),
     ],
 )  # fmt: skip
 def test_published_rms_rejects_malformed_entries(entry, match):
-    good = {"id": "V1", "kind": "statistical", "filter": "linear_kf", "quantity": "roll_rms_deg", "value": 0.16}  # fmt: skip
+    good = {"id": "V1", "kind": "approximate", "quantity": "roll_rms_deg", "value": "0.16", "select": {"filter": "linear_kf"}}  # fmt: skip
     with pytest.raises(ValueError, match=match):
-        F.published_rms({"values": [good, entry]})
+        F.published_rms({"items": [good, entry]})
+    assert F.published_rms({"items": [good]}) == {"linear_kf": {"roll_rms_deg": 0.16}}
 
 
-def test_published_rms_needs_values_and_skips_other_quantities():
-    with pytest.raises(ValueError, match="values"):
+def test_published_rms_needs_items_and_skips_other_quantities():
+    with pytest.raises(ValueError, match="items"):
         F.published_rms({"claims": []})
-    with pytest.raises(ValueError, match="values"):
+    with pytest.raises(ValueError, match="items"):
         F.published_rms(None)
-    other = {"id": "X", "kind": "exact", "filter": "ukf", "quantity": "roll_rms_deg", "value": 1.0}
-    assert F.published_rms({"values": [other]}) == {}
+    other = {"id": "X", "kind": "approximate", "quantity": "yaw_rms_deg", "value": "1.0", "select": {"filter": "ukf"}}  # fmt: skip
+    assert F.published_rms({"items": [other]}) == {}
 
 
 def test_sweep_figure_maps_the_sweep_rows(tmp_path):
@@ -448,7 +456,7 @@ def test_unknown_figure_name_and_bad_published_file(scenario_dir, tmp_path, caps
         F.write_all(scenario_dir, tmp_path, None, names=["fig99.png"])
     bad = tmp_path / "bad.yaml"
     bad.write_text(
-        "values:\n  - {id: V1, kind: statistical, filter: ukf, quantity: roll_rms_deg}\n"
+        "items:\n  - {id: V1, kind: approximate, select: {filter: ukf}, quantity: roll_rms_deg}\n"
     )
     rc = F.main(["--scenario-dir", str(scenario_dir), "--out-dir", str(tmp_path), "--published", str(bad)])  # fmt: skip
     assert rc == 2

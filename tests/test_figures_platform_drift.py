@@ -21,10 +21,10 @@ def _errors(path) -> None:
 def test_published_values_overlaid_on_their_panel(tmp_path):
     _errors(tmp_path)
     items = [
-        {"figure": "Fig. 5 (3)", "quantity": "error_2h_m", "value": "4.5", "unit": "km"},
-        {"figure": "Fig. 5 (4)", "quantity": "crossover_s", "value": "2400", "unit": "s"},
+        {"label": "Fig. 5 (3)", "quantity": "error_2h_m", "value": "4.5", "unit": "km"},
+        {"label": "Fig. 5 (4)", "quantity": "crossover_s", "value": "2400", "unit": "s"},
         {
-            "figure": "Fig. 6 (3)",
+            "label": "Fig. 6 (3)",
             "quantity": "error_2h_m",
             "value": "99",
             "unit": "km",

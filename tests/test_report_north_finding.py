@@ -134,21 +134,34 @@ CLAIMS = [
         "id": "C1.roll_best",
         "text": "Levelling: method 3 (y channel, 4 positions) is best.",
         "source": "Sec. 6",
-        "predicate": "argmin(rms_pct(phi, L1..L4)) == L3",
+        "label": "Sec. 6",
+        "predicate": {
+            "test": "argmin",
+            "quantity": "phi_deg",
+            "methods": ["L1", "L2", "L3", "L4"],
+            "expect": "L3",
+        },
     },
     {
         "id": "C2.azimuth_best",
         "text": "Azimuth: method 1 case 1 is best.",
         "source": "Sec. 6",
-        "predicate": "argmin(rms_pct(psi, A1c1..A5)) == A1c1",
+        "label": "Sec. 6",
+        "predicate": {
+            "test": "argmin",
+            "quantity": "psi_deg",
+            "methods": ["A1c1", "A5"],
+            "expect": "A1c1",
+        },
     },
     {
         "id": "C4.roll_L1_L2_equal",
         "text": "In levelling methods 1 and 2 the roll errors are approximately equal",
         "source": "Sec. 5-1-1",
+        "label": "Sec. 5-1-1",
         "note": "'approximately equal' read as RMS errors within 20 % of each other",
         "predicate": {
-            "type": "close",
+            "test": "close",
             "a": {"method": "L1"},
             "b": {"method": "L2"},
             "rel_tol": 0.2,
@@ -158,7 +171,13 @@ CLAIMS = [
         "id": "C3.gyro_scale_best",
         "text": "Gyro scale factor: method 5 is recommended.",
         "source": "Sec. 6",
-        "predicate": "argmin(rms_pct(gyro_scale, A4..A6)) == A5",
+        "label": "Sec. 6",
+        "predicate": {
+            "test": "argmin",
+            "quantity": "gyro_scale",
+            "methods": ["A4", "A5", "A6"],
+            "expect": "A5",
+        },
     },
 ]
 SCENARIO_PAPER = {
@@ -195,10 +214,9 @@ def _published_items() -> list[dict]:
             items.append(
                 {
                     "id": f"T{table}.{SHORT[q]}.{m}",
-                    "table": table,
+                    "label": f"Table {table}",
                     "quantity": q,
-                    "method": m,
-                    "sensor": sensor,
+                    "select": {"method": m, "sensor": sensor},
                     "value": value,
                     "error_pct": err,
                     "unit": UNIT[q],
@@ -211,10 +229,9 @@ def _published_items() -> list[dict]:
             items.append(
                 {
                     "id": f"T{table}.{SHORT[q]}.{m}.ideal",
-                    "table": table,
+                    "label": f"Table {table}",
                     "quantity": q,
-                    "method": m,
-                    "sensor": "ideal",
+                    "select": {"method": m, "sensor": "ideal"},
                     "value": None,  # the ideal column prints only "0 %"
                     "error_pct": "0",
                     "unit": UNIT[q],
@@ -588,7 +605,7 @@ def test_page_is_well_formed_and_self_contained(built):
 
 def test_one_section_per_published_table(built):
     items, _ = F.load_published(built["published"])
-    expected = {f"table-{int(n)}" for n in items["table"].dropna().unique()}
+    expected = {f"table-{int(n)}" for n in items["table_no"].dropna().unique()}
     assert len(expected) == 12
     p = parse(built["out"].read_text(encoding="utf-8"))
     found = Counter(

@@ -7,12 +7,21 @@ import pandas as pd
 import pytest
 
 from pipeline.altimeter_attitude import verdicts
+from pipeline.altimeter_attitude.claims import CLAIMS
 from pipeline.altimeter_attitude.columns import (
     RMS_SUMMARY_COLUMNS,
     RUN_RMS_COLUMNS,
     TIMESERIES_COLUMNS,
 )
-from pipeline.columns import VERDICT_COLUMNS
+from pipeline.altimeter_attitude.quantities import ScenarioResults, locate
+from pipeline.columns import VERDICT_FILE_COLUMNS
+from pipeline.verdicts.engine import verdict_table
+
+
+def judge(published, scenario_dir, transient):
+    """Every verdict row of the published file on the synthetic results of scenario_dir."""
+    return verdict_table(published, locate, CLAIMS, ScenarioResults(scenario_dir, transient))
+
 
 FILTERS = ("linear_kf", "linear_kf_no_gamma", "ukf", "ekf", "gyro_only", "accel_leveling")
 
@@ -98,16 +107,20 @@ def _by_id(frame):
     return frame.set_index("id")["verdict"].to_dict()
 
 
-def test_values_consistent_when_equal(published, tmp_path):
-    v = _by_id(verdicts.verdicts(published, _results(tmp_path, lkf_roll=0.16), 10.0))
-    assert v["V1.lkf_roll"] == "consistent"
-    assert v["V2.lkf_pitch"] == "consistent"  # 0.08 vs 0.07: inside 30 % + 2 SE
+def test_approximate_values_reproduced_when_equal(published, tmp_path):
+    frame = judge(published, _results(tmp_path, lkf_roll=0.16), 10.0)
+    v = _by_id(frame)
+    assert v["V1.lkf_roll"] == "reproduced"  # the paper's own 0.16 (up to MC noise)
+    assert v["V2.lkf_pitch"] == "reproduced"  # 0.08 vs 0.07: inside 30 % + 2 SE
     assert v["V3.ukf_roll"] == "not_reproduced"  # 0.40 vs 0.21
+    values = frame[frame["kind"] != "claim"]
+    assert set(values["kind"]) == {"approximate"}
+    assert values["tolerance"].str.contains(r"\+-30% of 0\.\d+ \+ 2 SE").all()
 
 
 def test_claims_on_synthetic_results(published, tmp_path):
-    frame = verdicts.verdicts(published, _results(tmp_path), 10.0)
-    assert list(frame.columns) == VERDICT_COLUMNS
+    frame = judge(published, _results(tmp_path), 10.0)
+    assert list(frame.columns) == VERDICT_FILE_COLUMNS
     v = _by_id(frame)
     assert v["C1.linear_beats_ukf"] == "upheld"  # 0.16 vs 0.40 over 50 runs
     assert v["C2.lkf_sigma_consistent"] == "upheld"
@@ -120,7 +133,7 @@ def test_claims_on_synthetic_results(published, tmp_path):
 
 def test_claims_flip_with_the_data(published, tmp_path):
     v = _by_id(
-        verdicts.verdicts(
+        judge(
             published,
             _results(tmp_path, lkf_roll=0.4, ukf_roll=0.2, nees=3.0, ekf_scale=50.0, norm=1e-2),
             10.0,
@@ -137,7 +150,7 @@ def test_missing_filter_is_named(published, tmp_path):
     s = pd.read_csv(d / "rms_summary.csv")
     s[s["filter"] != "ukf"].to_csv(d / "rms_summary.csv", index=False)
     with pytest.raises(ValueError, match="filter 'ukf' has no results"):
-        verdicts.verdicts(published, d, 10.0)
+        judge(published, d, 10.0)
 
 
 def test_sigma_consistency_looks_at_every_time(published, tmp_path):
@@ -151,17 +164,15 @@ def test_sigma_consistency_looks_at_every_time(published, tmp_path):
 
         return curve
 
-    bad = _by_id(verdicts.verdicts(published, _results(tmp_path, nees_curve=stretch(0.3)), 10.0))
+    bad = _by_id(judge(published, _results(tmp_path, nees_curve=stretch(0.3)), 10.0))
     assert bad["C2.lkf_sigma_consistent"] == "not_upheld"
     assert bad["C3.ukf_sigma_consistent"] == "not_upheld"
-    ok = _by_id(verdicts.verdicts(published, _results(tmp_path, nees_curve=stretch(0.05)), 10.0))
+    ok = _by_id(judge(published, _results(tmp_path, nees_curve=stretch(0.05)), 10.0))
     assert ok["C2.lkf_sigma_consistent"] == "upheld"
 
 
 def test_bounded_is_not_checkable_when_the_drifting_reference_passes_too(published, tmp_path):
-    flat = _by_id(
-        verdicts.verdicts(published, _results(tmp_path, gyro_curve=lambda t: 2.0 + 0 * t), 10.0)
-    )
+    flat = _by_id(judge(published, _results(tmp_path, gyro_curve=lambda t: 2.0 + 0 * t), 10.0))
     assert flat["C4.lkf_error_bounded"] == "not_checkable"
-    growing = _by_id(verdicts.verdicts(published, _results(tmp_path), 10.0))
+    growing = _by_id(judge(published, _results(tmp_path), 10.0))
     assert growing["C4.lkf_error_bounded"] == "upheld"

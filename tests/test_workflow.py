@@ -12,7 +12,7 @@ import pandas as pd
 import pytest
 import yaml
 
-from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS, VERDICT_KINDS, VERDICTS
+from pipeline.columns import AUDIT_COLUMNS, VERDICT_FILE_COLUMNS, VERDICT_KINDS, VERDICTS
 from pipeline.north_finding.columns import ESTIMATE_COLUMNS
 from tests.workflow_harness import ROOT, snakemake
 
@@ -31,11 +31,12 @@ def test_verdicts_one_row_per_published_item_and_claim(workflow_run):
     verdicts = pd.read_csv(
         repo / "results" / "north_finding" / "verdicts.csv", dtype=str, keep_default_na=False
     )
-    assert list(verdicts.columns) == VERDICT_COLUMNS
+    assert list(verdicts.columns) == VERDICT_FILE_COLUMNS
     assert sorted(verdicts["id"]) == sorted(expected_ids)
     assert verdicts["id"].is_unique
     assert set(verdicts["kind"]) <= set(VERDICT_KINDS)
     assert set(verdicts["verdict"]) <= set(VERDICTS)
+    assert (verdicts["tolerance"] != "").all() and (verdicts["reason"] != "").all()
     kinds = {i["id"]: i["kind"] for i in published["items"]}
     kinds.update({c["id"]: "claim" for c in published.get("claims", [])})
     assert dict(zip(verdicts["id"], verdicts["kind"], strict=True)) == kinds
@@ -112,8 +113,8 @@ def test_altimeter_attitude_outputs(workflow_run):
         )
     )
     verdicts = pd.read_csv(results / "verdicts.csv", dtype=str, keep_default_na=False)
-    assert list(verdicts.columns) == VERDICT_COLUMNS
-    ids = [v["id"] for v in published["values"]] + [c["id"] for c in published["claims"]]
+    assert list(verdicts.columns) == VERDICT_FILE_COLUMNS
+    ids = [v["id"] for v in published["items"]] + [c["id"] for c in published["claims"]]
     assert sorted(verdicts["id"]) == sorted(ids)
     assert set(verdicts["verdict"]) <= set(VERDICTS)
     sweep = pd.read_csv(results / "sweep.csv")

@@ -118,37 +118,47 @@ SWEEP_PARAMETERS = {
 def published_rms(data: Any) -> dict[str, dict[str, float]]:
     """The published RMS values ``{filter: {roll_rms_deg: v, pitch_rms_deg: v}}``.
 
-    ``data`` is the parsed ``config/published/altimeter_attitude.yaml``: entries under the
-    top-level ``values:`` list, e.g. ``{id: V1.lkf_roll, kind: statistical, filter: linear_kf,
-    quantity: roll_rms_deg, value: 0.16, ...}``. Statistical entries of the roll/pitch RMS
-    quantities are kept, others are skipped. A missing field, a non-numeric or non-positive
-    value, or a duplicated (filter, quantity) raises ValueError naming the entry.
+    ``data`` is the parsed ``config/published/altimeter_attitude.yaml`` (the shared format of
+    pipeline.verdicts): entries under the top-level ``items:`` list, e.g. ``{id: V1.lkf_roll,
+    kind: approximate, quantity: roll_rms_deg, value: "0.16", select: {filter: linear_kf},
+    ...}``. Entries of the roll/pitch RMS quantities are kept, others are skipped. A missing
+    field, a non-numeric or non-positive value, or a duplicated (filter, quantity) raises
+    ValueError naming the entry.
     """
-    if not isinstance(data, Mapping) or "values" not in data:
-        raise ValueError("published values: no top-level 'values:' list")
-    values = data["values"]
-    if not isinstance(values, list):
-        raise ValueError(f"published values: 'values' is {type(values).__name__}, not a list")
+    if not isinstance(data, Mapping) or "items" not in data:
+        raise ValueError("published values: no top-level 'items:' list")
+    items = data["items"]
+    if not isinstance(items, list):
+        raise ValueError(f"published values: 'items' is {type(items).__name__}, not a list")
     out: dict[str, dict[str, float]] = {}
-    for i, entry in enumerate(values):
+    for i, entry in enumerate(items):
         if not isinstance(entry, Mapping):
-            raise ValueError(f"published entry values[{i}] is not a mapping: {entry!r}")
-        name = f"{entry['id']!r}" if entry.get("id") is not None else f"values[{i}]"
-        missing = [k for k in ("kind", "filter", "quantity", "value") if entry.get(k) is None]
+            raise ValueError(f"published entry items[{i}] is not a mapping: {entry!r}")
+        name = f"{entry['id']!r}" if entry.get("id") is not None else f"items[{i}]"
+        select = entry.get("select") if isinstance(entry.get("select"), Mapping) else {}
+        flat = {**entry, "filter": select.get("filter")}
+        missing = [k for k in ("quantity", "value", "filter") if flat.get(k) is None]
         if missing:
             raise ValueError(f"published entry {name}: missing field(s) {missing}")
-        if entry["kind"] != "statistical" or entry["quantity"] not in RMS_QUANTITIES:
+        if entry["quantity"] not in RMS_QUANTITIES:
             continue
-        filt, qty, value = entry["filter"], entry["quantity"], entry["value"]
+        filt, qty, text = flat["filter"], entry["quantity"], entry["value"]
         if not isinstance(filt, str) or not filt:
             raise ValueError(f"published entry {name}: filter = {filt!r} is not a filter name")
-        if isinstance(value, bool) or not isinstance(value, int | float):
-            raise ValueError(f"published entry {name}: value = {value!r} is not a number")
+        try:
+            value = float(text) if isinstance(text, str) else None
+        except ValueError:
+            value = None
+        if value is None:
+            raise ValueError(
+                f"published entry {name}: value = {text!r} is not a number string (the printed "
+                "digits, e.g. '0.16')"
+            )
         if not math.isfinite(value) or value <= 0:
-            raise ValueError(f"published entry {name}: value = {value!r} must be finite and > 0")
+            raise ValueError(f"published entry {name}: value = {text!r} must be finite and > 0")
         if qty in out.get(filt, {}):
             raise ValueError(f"published entry {name}: {filt}.{qty} is given twice")
-        out.setdefault(filt, {})[qty] = float(value)
+        out.setdefault(filt, {})[qty] = value
     return out
 
 

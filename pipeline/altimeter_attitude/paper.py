@@ -81,8 +81,7 @@ STEPS = (
         "verdicts",
         "pipeline.altimeter_attitude.steps:verdicts",
         inputs=lambda ctx: {
-            "published": ctx.published,
-            "schema": "config/schemas/published_altimeter_attitude.schema.json",
+            **ctx.published_inputs,
             "scenario": ctx.scenario_file(ctx.settings["published_scenario"]),
             "scenario_schema": SCENARIO_SCHEMA,
             "results": [_published(ctx, f"{n}.csv") for n in RESULT_CSVS],
@@ -98,14 +97,14 @@ STEPS = (
             "timeseries": _published(ctx, "timeseries.csv"),
             "summary": _published(ctx, "rms_summary.csv"),
             "provenance": _published(ctx, "provenance.json"),
-            "published": ctx.published,
+            **ctx.published_inputs,
         },
         outputs=_figure_outputs,
     ),
     Step(
         "sweep_figure",
         "pipeline.altimeter_attitude.steps:sweep_figure",
-        inputs=lambda ctx: {"sweep": f"{ctx.results}/sweep.csv", "published": ctx.published},
+        inputs=lambda ctx: {"sweep": f"{ctx.results}/sweep.csv", **ctx.published_inputs},
         outputs=lambda ctx: {
             "png": ctx.figure(SWEEP_FIGURE),
             "svg": ctx.figure(FigureSpec(SWEEP_FIGURE, None, "").svg),

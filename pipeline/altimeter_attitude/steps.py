@@ -36,16 +36,10 @@ def sweep(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> 
 
 
 def verdicts(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
-    from pipeline.altimeter_attitude.scenario import load_scenario
-    from pipeline.altimeter_attitude.verdicts import load_published
-    from pipeline.altimeter_attitude.verdicts import verdicts as judge
-    from pipeline.atomic import write_csv
-    from pipeline.columns import VERDICT_COLUMNS
+    from pipeline.altimeter_attitude.verdicts import write_verdicts
 
-    published = load_published(inputs["published"])
-    sc = load_scenario(inputs["scenario"])
-    frame = judge(published, Path(inputs["results"][0]).parent, sc.transient)
-    write_csv(outputs["verdicts"], frame, VERDICT_COLUMNS)
+    results = Path(inputs["results"][0]).parent
+    frame = write_verdicts(inputs["published"], inputs["scenario"], results, outputs["verdicts"])
     log(frame["verdict"].value_counts().to_string())
 
 

@@ -38,7 +38,7 @@ if "snakemake" in globals():  # run by Snakemake's script: directive from the re
 import argparse
 import json
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -46,7 +46,6 @@ from typing import Any
 import matplotlib
 import numpy as np
 import pandas as pd
-import yaml
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
@@ -61,6 +60,7 @@ from pipeline.north_finding.columns import (
     QUANTITIES,
     SENSITIVITY_COLUMNS,
 )
+from pipeline.verdicts import published as verdicts_published
 
 __all__ = [
     "FIGURES",
@@ -220,25 +220,26 @@ def _table_number(value: object) -> float:
 def load_published(path: str | Path) -> tuple[pd.DataFrame, pd.DataFrame]:
     """Read ``config/published/<slug>.yaml`` -> ``(items, claims)``.
 
-    ``items`` has the columns :data:`PUBLISHED_ITEM_FIELDS` (values as printed,
-    strings) plus ``table_no`` (float, NaN if no table) and ``error_pct_value``
-    (float, NaN if the paper prints none); ``quantity`` is canonicalised with
-    :func:`canonical_quantity`. ``claims`` has ``id, text, source, predicate``.
-    The YAML is a mapping with a list ``items`` (a bare list is also accepted)
-    and an optional list ``claims``.
+    The file is read and checked by :func:`pipeline.verdicts.load_published` (the shared
+    format); the items are flattened into the columns :data:`PUBLISHED_ITEM_FIELDS` (values as
+    printed, strings; ``table`` is the item's ``label``, ``method`` and ``sensor`` its
+    selectors) plus ``table_no`` (float, NaN if no table) and ``error_pct_value`` (float, NaN
+    if the paper prints none); ``quantity`` is canonicalised with :func:`canonical_quantity`.
+    ``claims`` has ``id, text, source, predicate``.
     """
-    path = Path(path)
-    with path.open(encoding="utf-8") as fh:
-        data = yaml.safe_load(fh)
-    if isinstance(data, list):
-        raw_items, raw_claims = data, []
-    elif isinstance(data, Mapping):
-        if "items" not in data:
-            raise ValueError(f"{path}: no 'items' list (keys: {sorted(data)})")
-        raw_items, raw_claims = data.get("items") or [], data.get("claims") or []
-    else:
-        raise ValueError(f"{path}: expected a mapping with 'items', got {type(data).__name__}")
-    items = pd.DataFrame([dict(i) for i in raw_items])
+    data = verdicts_published.load_published(path)
+    raw_items = []
+    for i in data["items"]:
+        select = i.get("select") or {}
+        raw_items.append(
+            {
+                **{k: v for k, v in i.items() if k not in ("select", "label")},
+                "table": i["label"],
+                "method": select.get("method"),
+                "sensor": select.get("sensor"),
+            }
+        )
+    items = pd.DataFrame(raw_items)
     for field in PUBLISHED_ITEM_FIELDS:
         if field not in items.columns:
             items[field] = None
@@ -248,7 +249,7 @@ def load_published(path: str | Path) -> tuple[pd.DataFrame, pd.DataFrame]:
     items["sensor"] = items["sensor"].map(lambda s: None if s is None else str(s).lower())
     items["table_no"] = items["table"].map(_table_number).astype(float)
     items["error_pct_value"] = pd.to_numeric(items["error_pct"], errors="coerce").astype(float)
-    claims = pd.DataFrame([dict(c) for c in raw_claims], columns=None)
+    claims = pd.DataFrame([dict(c) for c in data["claims"]], columns=None)
     for field in ("id", "text", "source", "predicate"):
         if field not in claims.columns:
             claims[field] = None

@@ -109,8 +109,7 @@ STEPS = (
         "verdicts",
         "pipeline.north_finding.steps:verdicts",
         inputs=lambda ctx: {
-            "published": ctx.published,
-            "schema": "config/schemas/published.schema.json",
+            **ctx.published_inputs,
             "estimates": _published(ctx, "estimates.csv"),
             "mc_trials": _published(ctx, "mc_trials.csv"),
             "error_budget": _published(ctx, "error_budget.csv"),
@@ -122,7 +121,7 @@ STEPS = (
         "figures",
         "pipeline.north_finding.steps:figures",
         inputs=lambda ctx: {
-            "published": ctx.published,
+            **ctx.published_inputs,
             **{n: _published(ctx, f"{n}.csv") for n in ("estimates", "mc_trials", "sensitivity")},
             "provenance": _published(ctx, "provenance.json"),
         },
@@ -134,7 +133,7 @@ STEPS = (
         inputs=lambda ctx: {
             "audit": f"{ctx.results}/equation_audit.csv",
             "verdicts": f"{ctx.results}/verdicts.csv",
-            "published": ctx.published,
+            **ctx.published_inputs,
             "scenarios": [f for name in SCENARIO_FILES for f in ctx.per_scenario(name)],
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
             "scenario_schema": SCENARIO_SCHEMA,

@@ -20,9 +20,12 @@ def simulate(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) 
 
 def verdicts(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
     """Verdict of every published number and claim (published scenario's results)."""
-    from pipeline.compare import run
+    from pipeline.north_finding.verdicts import write_verdicts
 
-    run(inputs["published"], Path(inputs["estimates"]).parent, outputs["verdicts"])
+    frame = write_verdicts(
+        inputs["published"], Path(inputs["estimates"]).parent, outputs["verdicts"]
+    )
+    log(frame["verdict"].value_counts().to_string())
 
 
 def figures(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:

@@ -28,8 +28,9 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from pipeline.figure_files import write_png_svg  # noqa: E402
+from pipeline.platform_drift.quantities import FINAL_S  # noqa: E402
 from pipeline.platform_drift.scenario import load_scenario  # noqa: E402
-from pipeline.platform_drift.verdicts import FINAL_S, load_published  # noqa: E402
+from pipeline.verdicts import load_published  # noqa: E402
 
 __all__ = ["FIGURES", "plot_scenario", "run"]
 
@@ -77,7 +78,7 @@ def _published_marks(ax, items: Sequence[Mapping[str, Any]]) -> None:
 
 
 def _panel_number(item: Mapping[str, Any]) -> tuple[int, int] | None:
-    m = re.match(r"Fig\. (\d+) \((\d)\)", str(item.get("figure", "")))
+    m = re.match(r"Fig\. (\d+) \((\d)\)", str(item.get("label", "")))
     return (int(m.group(1)), int(m.group(2))) if m else None
 
 
@@ -88,7 +89,7 @@ def plot_scenario(
     published: Sequence[Mapping[str, Any]] = (),
 ):
     """The four-panel figure of one scenario; ``published``: the items of the published-values
-    file (those whose ``figure`` names this figure's number are overlaid on their panel)."""
+    file (those whose ``label`` names this figure's number are overlaid on their panel)."""
     errors = pd.read_csv(scenario_dir / "errors.csv")
     diag_path = scenario_dir / "errors_diagnostic.csv"
     if diag_path.is_file():

@@ -38,7 +38,6 @@ FIGURES = (
 #: the scenario the latitude sweep (Extra fig. 9) varies and the notebook reads
 SWEEP_SCENARIO = "stationary"
 SCENARIO_SCHEMA = "config/schemas/platform_drift_scenario.schema.json"
-PUBLISHED_SCHEMA = "config/schemas/published_platform_drift.schema.json"
 SCENARIO_CSVS = ("errors", "errors_diagnostic", "errors_long", "errors_long_diagnostic")
 
 
@@ -67,8 +66,7 @@ STEPS = (
         "verdicts",
         "pipeline.platform_drift.steps:verdicts",
         inputs=lambda ctx: {
-            "published": ctx.published,
-            "schema": PUBLISHED_SCHEMA,
+            **ctx.published_inputs,
             "errors": ctx.per_scenario("errors.csv"),
             "errors_long": ctx.per_scenario("errors_long.csv"),
         },
@@ -79,8 +77,7 @@ STEPS = (
         "figures",
         "pipeline.platform_drift.steps:figures",
         inputs=lambda ctx: {
-            "published": ctx.published,
-            "published_schema": PUBLISHED_SCHEMA,
+            **ctx.published_inputs,
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
             "scenario_schema": SCENARIO_SCHEMA,
             "errors": ctx.per_scenario("errors.csv"),

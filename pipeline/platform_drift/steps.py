@@ -18,9 +18,11 @@ def simulate(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) 
 
 
 def verdicts(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
-    from pipeline.platform_drift.verdicts import run
+    from pipeline.platform_drift.verdicts import write_verdicts
 
-    run(inputs["published"], Path(inputs["errors"][0]).parents[1], outputs["verdicts"])
+    results = Path(inputs["errors"][0]).parents[1]
+    frame = write_verdicts(inputs["published"], results, outputs["verdicts"])
+    log(frame["verdict"].value_counts().to_string())
 
 
 def figures(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:

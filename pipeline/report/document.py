@@ -26,6 +26,7 @@ import yaml
 
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
 from pipeline.provenance import git_describe
+from pipeline.verdicts import published_items
 
 __all__ = [
     "Block",
@@ -946,17 +947,13 @@ def _equations(p: _Paper) -> Section:
 
 
 def _published_items(published: Mapping[str, Any]) -> list[Mapping[str, Any]]:
-    for key in ("items", "values"):
-        items = published.get(key)
-        if isinstance(items, list):
-            return [i for i in items if isinstance(i, Mapping)]
-    return []
+    return published_items(published)
 
 
 def _group_label(item: Mapping[str, Any] | None) -> str:
     if not item:
         return "Other published numbers"
-    ref = str(item.get("table") or item.get("figure") or "").strip()
+    ref = str(item.get("label") or "").strip()
     if not ref:
         return "Other published numbers"
     return re.split(r"\s*\(", ref)[0]

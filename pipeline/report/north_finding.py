@@ -610,7 +610,7 @@ def _provenance_section(results_dir: Path, scenarios: Sequence[Path]) -> str:
 
 def _findings_section(results_dir: Path, verdicts: pd.DataFrame) -> str:
     """Findings that go beyond the paper, computed from the results (nothing typed by hand)."""
-    from pipeline.compare import NOISE_FREE_AGREES
+    from pipeline.verdicts import NOISE_FREE_AGREES
 
     body = ""
     stat = verdicts[verdicts["kind"] == "statistical"]
