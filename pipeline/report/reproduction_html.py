@@ -21,8 +21,10 @@ from pathlib import Path
 
 from pipeline.atomic import write_text
 from pipeline.report import html as H
-from pipeline.report.document import (
+from pipeline.report.equations import equation_groups, equation_list
+from pipeline.report.model import (
     Block,
+    Bullets,
     Document,
     EquationRow,
     EquationTable,
@@ -32,11 +34,9 @@ from pipeline.report.document import (
     ScoreRow,
     Section,
     Table,
-    equation_groups,
-    equation_list,
 )
 
-__all__ = ["CSS", "render_html", "section_numbers", "write_html"]
+__all__ = ["CSS", "render_block", "render_html", "render_section", "section_numbers", "write_html"]
 
 #: Words that get a verdict colour wherever a table cell holds exactly that word.
 _VERDICT_WORDS = {
@@ -184,7 +184,9 @@ def _id_attr(anchor: str | None) -> str:
     return f' id="{H.escape(anchor)}"' if anchor else ""
 
 
-def _table(t: Table, anchors: _Anchors | None = None) -> str:
+def _table(t: Table, anchors: _Anchors | None = None, status_rows: bool = False) -> str:
+    """``status_rows``: each row's class is its status word (``v-<word>``, a page's colours)
+    where the table has them; otherwise highlighted rows are ``bad``."""
     hl = set(t.highlight)
     keyed = anchors is not None and bool(t.columns) and t.columns[0] == "id"
     parts = ['<div class="scroll"><table class="data">\n']
@@ -198,7 +200,10 @@ def _table(t: Table, anchors: _Anchors | None = None) -> str:
         )
     parts.append("<tbody>\n")
     for i, row in enumerate(t.rows):
-        cls = ' class="bad"' if i in hl else ""
+        if status_rows and t.row_status:
+            cls = f' class="{H.css_class(t.row_status[i])}"'
+        else:
+            cls = ' class="bad"' if i in hl else ""
         if keyed and row:
             cls += _id_attr(anchors.claim("row", row[0].strip()))
         cells = "".join(
@@ -293,18 +298,23 @@ def _figure(f: Figure) -> str:
     anchor = "fig-" + H.slugify(f"{Path(f.path).parent.parent.name}-{Path(f.path).stem}")
     cap = f"<figcaption><strong>{H.escape(f.label)}</strong> {H.escape(f.caption)}</figcaption>\n"
     if not Path(f.path).is_file():
-        return f'<figure id="{anchor}">\n<p class="na">{H.escape(f.label)}: not available.</p>\n{cap}</figure>\n'
+        missing = H.escape(f"{f.label} ({Path(f.path).name}): not available.")
+        return f'<figure id="{anchor}">\n<p class="na">{missing}</p>\n{cap}</figure>\n'
     return (
         f'<figure id="{anchor}">\n<img src="{H.png_data_uri(f.path)}" '
         f'alt="{H.escape(f.label)}">\n{cap}</figure>\n'
     )
 
 
-def _block(b: Block, anchors: _Anchors | None = None) -> str:
+def render_block(b: Block, anchors: _Anchors | None = None, status_rows: bool = False) -> str:
+    """One block as HTML (see :func:`render_section`)."""
     if isinstance(b, Paragraph):
         return H.paragraph(b.text)
+    if isinstance(b, Bullets):
+        items = "".join(f"<li>{H.escape(i)}</li>\n" for i in b.items)
+        return f"<ul>\n{items}</ul>\n"
     if isinstance(b, Table):
-        return _table(b, anchors)
+        return _table(b, anchors, status_rows)
     if isinstance(b, Figure):
         return _figure(b)
     if isinstance(b, EquationTable):
@@ -314,18 +324,28 @@ def _block(b: Block, anchors: _Anchors | None = None) -> str:
     raise TypeError(f"unknown block type {type(b).__name__}")
 
 
-def _section(
-    s: Section, numbers: dict[str, str], level: int, anchors: _Anchors | None = None
+def render_section(
+    s: Section,
+    numbers: dict[str, str],
+    level: int,
+    anchors: _Anchors | None = None,
+    status_rows: bool = False,
 ) -> str:
+    """A section (heading ``h{level}``, numbered from ``numbers`` where it has a number) with
+    its blocks and subsections. ``anchors``: hand out row anchors (the combined report);
+    ``status_rows``: colour table rows by their status words (a per-paper page)."""
     h = min(level, 6)
     num = numbers.get(s.id, "")
     if anchors is not None and level == 2:  # a top-level section: a paper's, or not
         anchors.paper = s.id if s.id in anchors.papers else ""
-    body = "".join(_block(b, anchors) for b in s.blocks)
-    body += "".join(_section(c, numbers, level + 1, anchors) for c in s.subsections)
+    body = "".join(render_block(b, anchors, status_rows) for b in s.blocks)
+    body += "".join(
+        render_section(c, numbers, level + 1, anchors, status_rows) for c in s.subsections
+    )
+    secno = f'<span class="secno">{num}</span>' if num else ""
     return (
         f'<section id="{H.escape(s.id)}">\n'
-        f'<h{h}><a href="#{H.escape(s.id)}"><span class="secno">{num}</span>'
+        f'<h{h}><a href="#{H.escape(s.id)}">{secno}'
         f"{H.escape(s.title)}</a></h{h}>\n{body}</section>\n"
     )
 
@@ -461,7 +481,7 @@ def render_html(doc: Document) -> str:
     numbers = section_numbers(doc.sections)
     # the sections first: they hand out the row anchors the scoreboard links to
     anchors = _Anchors(papers={r.slug for r in doc.scoreboard})
-    sections = "".join(_section(s, numbers, 2, anchors) for s in doc.sections)
+    sections = "".join(render_section(s, numbers, 2, anchors) for s in doc.sections)
     body = (
         '<header class="title">\n'
         f"<h1>{H.escape(doc.title)}</h1>\n"

@@ -173,8 +173,14 @@ rule altimeter_attitude_sweep_figure:
 
 rule altimeter_attitude_report:
     input:
-        "pipeline/report/altimeter_attitude.py",
-        "pipeline/report/html.py",
+        PAGE_CODE,
+        "pipeline/altimeter_attitude/report.py",
+        "pipeline/altimeter_attitude/report_summary.py",
+        "pipeline/altimeter_attitude/report_findings.py",
+        "pipeline/altimeter_attitude/filter_comparison.py",
+        "pipeline/altimeter_attitude/paper.py",
+        "pipeline/altimeter_attitude/scenario.py",
+        "pipeline/altimeter_attitude/workflow.py",
         audit=f"{AA}/equation_audit.csv",
         verdicts=f"{AA}/verdicts.csv",
         summaries=expand(f"{AA}/{{scenario}}/rms_summary.csv", scenario=AA_SCENARIOS),

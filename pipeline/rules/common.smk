@@ -34,6 +34,17 @@ COMMON_CODE = [
     "pipeline/atomic.py",
     "pipeline/provenance.py",
 ]
+# the shared code a per-paper page is rendered with (pipeline.report.page_html.build_page)
+PAGE_CODE = [
+    "pipeline/paper.py",
+    "pipeline/registry.py",
+    "pipeline/report/model.py",
+    "pipeline/report/page_html.py",
+    "pipeline/report/reproduction_html.py",
+    "pipeline/report/html.py",
+    "pipeline/report/equations.py",
+    "pipeline/report/figures.py",
+]
 
 
 def tagged(path, paper, subcategory, caption, **labels):

@@ -153,8 +153,14 @@ rule north_finding_notebook:
 
 rule north_finding_report:
     input:
-        "pipeline/report/north_finding.py",
-        "pipeline/report/html.py",
+        PAGE_CODE,
+        "pipeline/north_finding/report.py",
+        "pipeline/north_finding/report_results.py",
+        "pipeline/north_finding/findings.py",
+        "pipeline/north_finding/paper.py",
+        "pipeline/north_finding/figures.py",
+        "pipeline/north_finding/scenario.py",
+        "pipeline/compare.py",
         audit=f"{NF}/equation_audit.csv",
         verdicts=f"{NF}/verdicts.csv",
         published="config/published/north_finding.yaml",

@@ -140,8 +140,10 @@ rule platform_drift_figures:
 
 rule platform_drift_report:
     input:
-        "pipeline/report/platform_drift.py",
-        "pipeline/report/html.py",
+        PAGE_CODE,
+        "pipeline/platform_drift/report.py",
+        "pipeline/platform_drift/paper.py",
+        "pipeline/platform_drift/scenario.py",
         audit=f"{PD}/equation_audit.csv",
         verdicts=f"{PD}/verdicts.csv",
         summaries=expand(f"{PD}/{{scenario}}/summary.csv", scenario=PD_SCENARIOS),

@@ -1,16 +1,22 @@
 # The combined report of all papers: reports/reproduction.html and reports/reproduction.pdf
 # (scoreboard, one section per paper, provenance), built from every paper's results and page.
 # Uses NF, PD, AA and the figure and scenario lists of the per-paper rule files.
-REPRODUCTION_CODE = [
+# the document (pipeline.report.document.build_document): shared modules, and each paper's
+# report sections (the code its page rule lists)
+DOCUMENT_CODE = [
+    *PAGE_CODE,
     "pipeline/report/document.py",
-    "pipeline/report/reproduction_html.py",
-    "pipeline/report/html.py",
-    "pipeline/report/north_finding.py",
-    "pipeline/report/platform_drift.py",
-    "pipeline/report/altimeter_attitude.py",
+    "pipeline/report/scoreboard.py",
+    "pipeline/report/published.py",
+    "pipeline/report/paper_section.py",
+    "pipeline/report/provenance_section.py",
+    *[str(f) for f in rules.north_finding_report.input if str(f).startswith("pipeline/")],
+    *[str(f) for f in rules.platform_drift_report.input if str(f).startswith("pipeline/")],
+    *[str(f) for f in rules.altimeter_attitude_report.input if str(f).startswith("pipeline/")],
 ]
+REPRODUCTION_CODE = [*DOCUMENT_CODE, "pipeline/report/reproduction_html.py"]
 REPRODUCTION_PDF_CODE = [
-    "pipeline/report/document.py",
+    *DOCUMENT_CODE,
     "pipeline/report/reproduction_pdf.py",
     "pipeline/report/typst_math.py",
 ]
@@ -48,6 +54,8 @@ REPRODUCTION_INPUTS = dict(
     scenarios=REPRODUCTION_SCENARIO_FILES,
     provenance=REPRODUCTION_PROVENANCE,
     figures=REPRODUCTION_FIGURES,
+    # not read: the pages' rules declare every results file the papers' report sections read
+    # (build_document calls the same section functions), so their inputs are built first
     pages=expand(f"{REPORTS}/{{paper}}.html", paper=config["papers"]),
     notebooks=expand(f"{REPORTS}/notebooks/{{paper}}.html", paper=config["papers"]),
 )

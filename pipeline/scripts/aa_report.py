@@ -1,20 +1,22 @@
-# Snakemake script: the altimeter-attitude HTML page.
+# Snakemake script: the altimeter-attitude HTML page (pipeline.report.page_html.build_page).
 import sys
 from pathlib import Path
 
-from pipeline.report.altimeter_attitude import build_page
+from pipeline.registry import load_paper
+from pipeline.report.model import ReportInputs
+from pipeline.report.page_html import build_page
 
 with open(snakemake.log[0], "w") as log:  # noqa: F821
     sys.stderr = log
-    build_page(
-        Path(snakemake.input.audit).parent,  # noqa: F821
-        "config/scenarios/altimeter_attitude",
+    out = build_page(
+        load_paper("altimeter_attitude"),
+        ReportInputs(
+            results=Path(snakemake.input.audit).parent,  # noqa: F821
+            scenarios=Path("config/scenarios/altimeter_attitude"),
+            published=Path("config/published/altimeter_attitude.yaml"),
+            figures=Path(snakemake.input.figures[0]).parent,  # noqa: F821
+            settings=snakemake.config.get("altimeter_attitude") or {},  # noqa: F821
+        ),
         snakemake.output[0],  # noqa: F821
-        published_scenario=snakemake.config["altimeter_attitude"]["published_scenario"],  # noqa: F821
-        audit=snakemake.input.audit,  # noqa: F821
-        verdicts=snakemake.input.verdicts,  # noqa: F821
-        summaries=list(snakemake.input.summaries),  # noqa: F821
-        sweep=snakemake.input.sweep,  # noqa: F821
-        figures_dir=Path(snakemake.input.figures[0]).parent,  # noqa: F821
     )
-    print(f"wrote {snakemake.output[0]}", file=log)  # noqa: F821
+    print(f"wrote {out}", file=log)
