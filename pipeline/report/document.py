@@ -95,18 +95,21 @@ def build_document(
 ) -> Document:
     """Build the report's content from the results (nothing typed by hand).
 
-    ``results_dir``, ``reports_dir`` and ``config`` (the config directory) are taken
-    relative to ``root`` unless absolute. Reads ``<config>/config.yaml`` (``papers``, each
-    paper's settings) and, per paper: ``equation_audit.csv``, ``equation_math.json``,
-    ``verdicts.csv``, the scenario ``provenance.json`` files and ``benchmarks/*.tsv`` under
-    ``results/<slug>/``; ``config/scenarios/<slug>/*.yaml`` and
-    ``config/published/<slug>.yaml``; and whatever the paper's report function reads (its
-    results files and figures, see its ``Paper.report``). Raises ``FileNotFoundError``
-    naming a missing required input.
+    ``results_dir`` and ``config`` (the config directory) are taken relative to ``root``
+    unless absolute; nothing under ``reports_dir`` is read (the per-paper pages are not
+    parsed: each paper's section is built from the same sections as its page).
+
+    Reads ``<config>/config.yaml`` (``papers``, each paper's settings) and, per paper:
+    ``equation_audit.csv``, ``equation_math.json``, ``verdicts.csv``, the scenario
+    ``provenance.json`` files and ``benchmarks/*.tsv`` under ``results/<slug>/``;
+    ``config/scenarios/<slug>/*.yaml`` and ``config/published/<slug>.yaml``; and whatever
+    the paper's report function reads (its results files and figures, see its
+    ``Paper.report``). Raises ``FileNotFoundError`` naming a missing required input.
     """
     root = Path(root)
     results = _under(root, results_dir)
-    _under(root, reports_dir)  # the report links to pages and notebooks beside it
+    # reports_dir is not read: the report links to the pages and notebooks beside it by
+    # relative href (<slug>.html, notebooks/<slug>.html), wherever it is written
     config_dir = _under(root, config)
     cfg = _load_yaml(config_dir / "config.yaml")
     slugs = [str(s) for s in (cfg.get("papers") or [])]
