@@ -709,8 +709,8 @@ def test_resolve_dotted_indexes_lists_and_rejects_missing():
 
 
 def test_html_helpers():
+    from pipeline.report.blocks_html import render_block
     from pipeline.report.model import Figure, frame_table
-    from pipeline.report.reproduction_html import render_block
 
     df = pd.DataFrame({"id": ["a<b"], "x": [0.1 + 0.2], "verdict": ["not_reproduced"]})
     t = render_block(frame_table(df, status="verdict"), status_rows=True)

@@ -1,6 +1,6 @@
 """A paper's page ``reports/<slug>.html``, rendered from the sections its report contributes
 (the same :mod:`pipeline.report.model` objects its section of the combined report is built
-from) with the combined report's HTML renderer.
+from) with the combined report's block renderer (:mod:`pipeline.report.blocks_html`).
 
 One self-contained file: inline CSS, figures as ``data:`` URIs, no script, nothing fetched;
 the same inputs give the same bytes.
@@ -19,8 +19,8 @@ from pathlib import Path
 from pipeline.atomic import write_text
 from pipeline.paper import Paper
 from pipeline.report import html as H
+from pipeline.report.blocks_html import render_section
 from pipeline.report.model import PaperReport, ReportInputs
-from pipeline.report.reproduction_html import render_section
 
 __all__ = ["build_page", "main", "render_page"]
 

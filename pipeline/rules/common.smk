@@ -40,7 +40,7 @@ PAGE_CODE = [
     "pipeline/registry.py",
     "pipeline/report/model.py",
     "pipeline/report/page_html.py",
-    "pipeline/report/reproduction_html.py",
+    "pipeline/report/blocks_html.py",
     "pipeline/report/html.py",
     "pipeline/report/equations.py",
     "pipeline/report/figures.py",
