@@ -193,3 +193,39 @@ def test_the_papers_math_stems_reach_the_pdf():
     assert "tilde(theta)_1" in render_typst(doc)
     plain = Section("pendulum", "P", [], [equation_section("pendulum", audit, forms, counts, {})])
     assert "tilde(theta)" not in render_typst(Document("t", "s", "v0", [], [plain]))
+
+
+def test_published_tables_show_tolerance_and_reason_where_recorded(tmp_path):
+    from pipeline.report.published import published_section
+
+    published = tmp_path / "p.yaml"
+    published.write_text(
+        "items:\n  - {id: T1, table: Table 2 (x)}\n  - {id: F1, figure: Fig. 10}\n"
+        "  - {id: T3, table: Table 10}\n",
+        encoding="utf-8",
+    )
+    base = {"quantity": "q", "method": "m", "published": "1", "reproduced": "1", "note": ""}
+    verdicts = pd.DataFrame(
+        [
+            {**base, "id": "T3", "kind": "exact", "verdict": "reproduced"},
+            {**base, "id": "F1", "kind": "approximate", "verdict": "not_reproduced"},
+            {**base, "id": "T1", "kind": "exact", "verdict": "reproduced"},
+            {**base, "id": "C1", "kind": "claim", "verdict": "upheld"},
+        ]
+    )
+    sec = published_section("p-published", verdicts, published)
+    tables = [b for b in sec.blocks if isinstance(b, Table)]
+    # by the number in the paper's table or figure label (10 after 2), then the claims
+    assert [t.caption for t in tables] == [
+        "Table 2: published numbers",
+        "Fig. 10: published numbers",
+        "Table 10: published numbers",
+        "Claims",
+    ]
+    assert tables[1].highlight == [0] and tables[0].highlight == []
+    assert "tolerance" not in tables[0].columns
+    verdicts = verdicts.assign(tolerance="0.5 %", reason="within the tolerance")
+    tables = [b for b in published_section("p", verdicts, published).blocks if isinstance(b, Table)]
+    assert tables[0].columns[-2:] == ["tolerance", "reason"]
+    assert tables[0].rows[0][-2:] == ["0.5 %", "within the tolerance"]
+    assert tables[-1].columns[-1] == "reason" and tables[-1].rows[0][-1] == "within the tolerance"

@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import os
 import re
+import shutil
 import struct
 import subprocess
 import sys
@@ -720,3 +721,16 @@ def test_html_helpers():
         H.png_data_uri(b"GIF89a")
     missing = render_block(Figure("/nonexistent/f.png", "c", "Fig. 1"))
     assert missing.count("not available") == 1 and "<img" not in missing
+
+
+def test_tolerance_and_reason_shown_where_verdicts_csv_has_them(built, tmp_path):
+    results = tmp_path / "results"
+    shutil.copytree(built["results"], results)
+    v = pd.read_csv(results / "verdicts.csv", dtype=str, keep_default_na=False)
+    v = v.assign(tolerance=[f"tol {i}" for i in range(len(v))], reason="a reason")
+    v.to_csv(results / "verdicts.csv", index=False)
+    out = R.build_page(results, built["scenarios"], built["published"], tmp_path / "p.html")
+    text = out.read_text(encoding="utf-8")
+    assert "<th>tolerance</th><th>reason</th>" in text
+    assert "<td>tol 0</td><td>a reason</td>" in text
+    assert "<th>tolerance</th>" not in built["out"].read_text(encoding="utf-8")

@@ -42,6 +42,7 @@ from pipeline.columns import (
     RMS_SUMMARY_COLUMNS,
     SWEEP_COLUMNS,
     VERDICT_COLUMNS,
+    VERDICT_OPTIONAL_COLUMNS,
 )
 from pipeline.report.figures import figure_blocks
 from pipeline.report.html import format_value, slugify
@@ -70,15 +71,19 @@ FILTER_LABELS: dict[str, str] = {
 }
 
 
-def _read(path: Path, columns: Sequence[str], *, as_text: bool = False) -> pd.DataFrame | None:
-    """The CSV at ``path`` with the contract ``columns`` (in that order); None if absent."""
+def _read(
+    path: Path, columns: Sequence[str], *, as_text: bool = False, optional: Sequence[str] = ()
+) -> pd.DataFrame | None:
+    """The CSV at ``path`` with the contract ``columns`` (in that order) and the ``optional``
+    ones it has, by name; None if absent."""
     if not path.is_file():
         return None
     df = pd.read_csv(path, dtype=str, keep_default_na=False) if as_text else pd.read_csv(path)
     missing = [c for c in columns if c not in df.columns]
     if missing:
         raise ValueError(f"{path}: missing columns {missing} (has {list(df.columns)})")
-    return df[list(columns)]
+    extra = [c for c in optional if c in df.columns and c not in columns]
+    return df[[*columns, *extra]]
 
 
 def _value_text(value: Any) -> str:
@@ -291,7 +296,9 @@ def report(inputs: ReportInputs) -> PaperReport:
     sweep_path = results / "sweep.csv"
     summary_paths = sorted(results.glob("*/rms_summary.csv"))
     audit = _read(audit_path, AUDIT_COLUMNS, as_text=True)
-    verdicts = _read(verdicts_path, VERDICT_COLUMNS, as_text=True)
+    verdicts = _read(
+        verdicts_path, VERDICT_COLUMNS, as_text=True, optional=VERDICT_OPTIONAL_COLUMNS
+    )
     if verdicts is None:
         raise FileNotFoundError(f"{verdicts_path}: required input is missing")
     sweep = _read(sweep_path, SWEEP_COLUMNS)

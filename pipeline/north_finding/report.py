@@ -28,6 +28,7 @@ from pipeline.columns import (
     ERROR_BUDGET_COLUMNS,
     VERDICT_COLUMNS,
     VERDICT_KINDS,
+    VERDICT_OPTIONAL_COLUMNS,
     VERDICTS,
 )
 from pipeline.north_finding.figures import load_published
@@ -211,6 +212,9 @@ def _tables(items: pd.DataFrame, verdicts: pd.DataFrame) -> Section:
         sensor=items["sensor"].fillna(""),
     )
     cols = ["id", "method", "sensor", "published", "reproduced", "verdict", "note"]
+    extra = [c for c in VERDICT_OPTIONAL_COLUMNS if c in v.columns]  # where recorded
+    joined = joined.assign(**{c: items["id"].map(v[c]).fillna("") for c in extra})
+    cols += extra
     subs = [
         Section(
             f"table-{int(n)}",
@@ -253,6 +257,9 @@ def _claims(claims: pd.DataFrame, items: pd.DataFrame, verdicts: pd.DataFrame) -
             note=claims["id"].map(v["note"]).fillna("no verdict in verdicts.csv"),
         )
         cols = ["id", "text", "source", "reading", "predicate", "reproduced", "verdict", "note"]
+        extra = [c for c in VERDICT_OPTIONAL_COLUMNS if c in v.columns]  # where recorded
+        c = c.assign(**{k: claims["id"].map(v[k]).fillna("") for k in extra})
+        cols += extra
         if not c["reading"].astype(bool).any():
             cols.remove("reading")
         blocks.append(

@@ -14,7 +14,7 @@ from typing import Any
 
 import pandas as pd
 
-from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
+from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS, VERDICT_OPTIONAL_COLUMNS
 from pipeline.config import dotted_get
 from pipeline.platform_drift.paper import PAPER
 from pipeline.platform_drift.scenario import load_scenario
@@ -33,14 +33,16 @@ from pipeline.report.model import (
 __all__ = ["report"]
 
 
-def _read(path: Path, columns: list[str]) -> pd.DataFrame:
+def _read(path: Path, columns: list[str], optional: list[str] | None = None) -> pd.DataFrame:
+    """A required CSV as text: ``columns`` and the ``optional`` ones it has, by name."""
     if not path.is_file():
         raise FileNotFoundError(f"{path}: required input is missing")
     df = pd.read_csv(path, dtype=str, keep_default_na=False)
     missing = [c for c in columns if c not in df.columns]
     if missing:
         raise ValueError(f"{path}: missing columns {missing} (has {list(df.columns)})")
-    return df[columns]
+    extra = [c for c in optional or [] if c in df.columns and c not in columns]
+    return df[[*columns, *extra]]
 
 
 def _counts(frame: pd.DataFrame, column: str) -> str:
@@ -133,7 +135,7 @@ def report(inputs: ReportInputs) -> PaperReport:
     """The paper's report sections, built from ``inputs`` (see the module docstring)."""
     results = inputs.results
     audit = _read(results / "equation_audit.csv", AUDIT_COLUMNS)
-    verdicts = _read(results / "verdicts.csv", VERDICT_COLUMNS)
+    verdicts = _read(results / "verdicts.csv", VERDICT_COLUMNS, VERDICT_OPTIONAL_COLUMNS)
     differs = audit[audit["status"] == "differs"]
     sections = [
         Section("summary", "Summary", _summary(results, audit, verdicts)),

@@ -19,7 +19,7 @@ from typing import Any
 import pandas as pd
 import yaml
 
-from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
+from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS, VERDICT_OPTIONAL_COLUMNS
 from pipeline.paper import Paper
 from pipeline.provenance import git_describe
 from pipeline.registry import load_paper
@@ -162,16 +162,20 @@ def _load_yaml(path: Path) -> dict[str, Any]:
     return data
 
 
-def read_results_csv(path: Path, columns: Sequence[str]) -> pd.DataFrame:
-    """A required results CSV with every cell as printed (strings), ``columns`` selected by
-    name (other columns are ignored); FileNotFoundError / ValueError naming the file."""
+def read_results_csv(
+    path: Path, columns: Sequence[str], optional: Sequence[str] = ()
+) -> pd.DataFrame:
+    """A required results CSV with every cell as printed (strings): ``columns`` (required)
+    and the ``optional`` ones the file has, selected by name (other columns are ignored);
+    FileNotFoundError / ValueError naming the file."""
     if not path.is_file():
         raise FileNotFoundError(f"{path}: required input is missing")
     df = pd.read_csv(path, dtype=str, keep_default_na=False)
     missing = [c for c in columns if c not in df.columns]
     if missing:
         raise ValueError(f"{path}: missing columns {missing} (has {list(df.columns)})")
-    return df[list(columns)]
+    extra = [c for c in optional if c in df.columns and c not in columns]
+    return df[[*columns, *extra]]
 
 
 @dataclass(frozen=True)
@@ -190,7 +194,9 @@ def _load(
         paper.slug, results, config_dir, cfg.get(paper.slug) or {}, display_root=root
     )
     audit = read_results_csv(inputs.results / "equation_audit.csv", AUDIT_COLUMNS)
-    verdicts = read_results_csv(inputs.results / "verdicts.csv", VERDICT_COLUMNS)
+    verdicts = read_results_csv(
+        inputs.results / "verdicts.csv", VERDICT_COLUMNS, VERDICT_OPTIONAL_COLUMNS
+    )
     score = score_row(paper.slug, paper.title, audit, verdicts)
     report = paper_report(paper, inputs)
     equations = equation_section(

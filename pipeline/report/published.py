@@ -17,6 +17,7 @@ from typing import Any
 import pandas as pd
 import yaml
 
+from pipeline.columns import VERDICT_OPTIONAL_COLUMNS
 from pipeline.report.model import FAILURE_WORDS, Block, Paragraph, Section, Table
 
 __all__ = ["group_label", "published_items", "published_section"]
@@ -70,6 +71,7 @@ def published_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Sect
     groups: dict[str, list[list[str]]] = {}
     marks: dict[str, list[int]] = {}
     cols = ["id", "quantity", "method", "published", "reproduced", "verdict", "note"]
+    cols += [c for c in VERDICT_OPTIONAL_COLUMNS if c in verdicts.columns]  # where recorded
     for r in numbers[cols].itertuples(index=False):
         label = group_label(items.get(str(r.id).split("/")[0]))
         rows = groups.setdefault(label, [])
@@ -87,13 +89,24 @@ def published_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Sect
         )
     if len(claims):
         rows, hl = [], []
-        for r in claims.itertuples(index=False):
+        why = ["reason"] if "reason" in claims.columns else []
+        for r in claims[
+            ["id", "method", "published", "reproduced", "verdict", "note", *why]
+        ].itertuples(index=False):
             if r.verdict in FAILURE_WORDS:
                 hl.append(len(rows))
-            rows.append([r.id, r.method, r.published, r.reproduced, r.verdict, r.note])
+            rows.append(list(r))
         blocks.append(
             Table(
-                columns=["id", "applies to", "claim", "evidence (computed)", "verdict", "source"],
+                columns=[
+                    "id",
+                    "applies to",
+                    "claim",
+                    "evidence (computed)",
+                    "verdict",
+                    "source",
+                    *why,
+                ],
                 rows=rows,
                 caption="Claims",
                 highlight=hl,
