@@ -178,6 +178,25 @@ class ReportInputs:
     #: are inside it, so the page does not depend on where the repository is
     display_root: Path | None = None
 
+    @classmethod
+    def from_context(cls, ctx: Any) -> ReportInputs:
+        """The inputs of a :class:`~pipeline.paper.Context` (the registry's view of a paper
+        under the current config).
+
+        >>> from pipeline.paper import Context
+        >>> ctx = Context("x", "results", "reports", ("paper",), {"published_scenario": "paper"})
+        >>> i = ReportInputs.from_context(ctx)
+        >>> i.results.as_posix(), i.figures.as_posix(), i.published.as_posix(), dict(i.settings)
+        ('results/x', 'results/x/figures', 'config/published/x.yaml', {'published_scenario': 'paper'})
+        """
+        return cls(
+            results=Path(ctx.results),
+            scenarios=Path(ctx.scenarios_dir),
+            published=Path(ctx.published),
+            figures=Path(ctx.figure("-")).parent,
+            settings=dict(ctx.settings),
+        )
+
     def shown(self, path: Path) -> str:
         """``path`` as a page shows it.
 
