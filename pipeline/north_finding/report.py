@@ -31,8 +31,8 @@ from pipeline.columns import (
     VERDICT_OPTIONAL_COLUMNS,
     VERDICTS,
 )
+from pipeline.north_finding.error_propagation import azimuth_error_budget, noise_free_agreement
 from pipeline.north_finding.figures import load_published
-from pipeline.north_finding.findings import azimuth_error_budget, noise_free_agreement
 from pipeline.north_finding.paper import CITATION, PAPER, TITLE
 from pipeline.north_finding.report_results import (
     assumptions_section,

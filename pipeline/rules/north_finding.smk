@@ -156,7 +156,7 @@ rule north_finding_report:
         PAGE_CODE,
         "pipeline/north_finding/report.py",
         "pipeline/north_finding/report_results.py",
-        "pipeline/north_finding/findings.py",
+        "pipeline/north_finding/error_propagation.py",
         "pipeline/north_finding/paper.py",
         "pipeline/north_finding/figures.py",
         "pipeline/north_finding/scenario.py",

@@ -1,6 +1,7 @@
-"""Findings beyond the paper, computed from the north_finding results: which real-sensor
-values the noise-free propagation of the sensor errors reproduces, and the azimuth error
-budget of each method (one error source at a time).
+"""How the sensor errors propagate into the north_finding estimates, from its results: which
+published real-sensor values the noise-free propagation of the sensor errors reproduces, and
+the azimuth error budget of each method (one error source at a time). The page's "Findings
+beyond the paper" are written from these.
 """
 
 from __future__ import annotations
