@@ -13,8 +13,6 @@ AUDIT_STATUSES = ("match", "differs", "not_checkable")
 
 # results/<slug>/verdicts.csv
 VERDICT_COLUMNS = ["id", "kind", "quantity", "method", "published", "reproduced", "verdict", "note"]
-#: verdicts.csv columns the reports show where a file has them (selected by name)
-VERDICT_OPTIONAL_COLUMNS = ["tolerance", "reason"]
 VERDICT_KINDS = ("exact", "statistical", "claim")
 # exact -> reproduced | not_reproduced; statistical -> consistent | not_reproduced;
 # claim -> upheld | not_upheld | not_checkable

@@ -42,11 +42,11 @@ from pipeline.columns import (
     RMS_SUMMARY_COLUMNS,
     SWEEP_COLUMNS,
     VERDICT_COLUMNS,
-    VERDICT_OPTIONAL_COLUMNS,
 )
 from pipeline.report.figures import figure_blocks
 from pipeline.report.html import format_value, slugify
 from pipeline.report.model import (
+    VERDICT_EXTRA_COLUMNS,
     Block,
     Bullets,
     PaperReport,
@@ -296,9 +296,7 @@ def report(inputs: ReportInputs) -> PaperReport:
     sweep_path = results / "sweep.csv"
     summary_paths = sorted(results.glob("*/rms_summary.csv"))
     audit = _read(audit_path, AUDIT_COLUMNS, as_text=True)
-    verdicts = _read(
-        verdicts_path, VERDICT_COLUMNS, as_text=True, optional=VERDICT_OPTIONAL_COLUMNS
-    )
+    verdicts = _read(verdicts_path, VERDICT_COLUMNS, as_text=True, optional=VERDICT_EXTRA_COLUMNS)
     if verdicts is None:
         raise FileNotFoundError(f"{verdicts_path}: required input is missing")
     sweep = _read(sweep_path, SWEEP_COLUMNS)

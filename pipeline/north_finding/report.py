@@ -28,7 +28,6 @@ from pipeline.columns import (
     ERROR_BUDGET_COLUMNS,
     VERDICT_COLUMNS,
     VERDICT_KINDS,
-    VERDICT_OPTIONAL_COLUMNS,
     VERDICTS,
 )
 from pipeline.north_finding.error_propagation import azimuth_error_budget, noise_free_agreement
@@ -44,6 +43,7 @@ from pipeline.north_finding.report_results import (
 )
 from pipeline.report.figures import figure_blocks
 from pipeline.report.model import (
+    VERDICT_EXTRA_COLUMNS,
     Block,
     Bullets,
     PaperReport,
@@ -212,7 +212,7 @@ def _tables(items: pd.DataFrame, verdicts: pd.DataFrame) -> Section:
         sensor=items["sensor"].fillna(""),
     )
     cols = ["id", "method", "sensor", "published", "reproduced", "verdict", "note"]
-    extra = [c for c in VERDICT_OPTIONAL_COLUMNS if c in v.columns]  # where recorded
+    extra = [c for c in VERDICT_EXTRA_COLUMNS if c in v.columns]  # where recorded
     joined = joined.assign(**{c: items["id"].map(v[c]).fillna("") for c in extra})
     cols += extra
     subs = [
@@ -257,7 +257,7 @@ def _claims(claims: pd.DataFrame, items: pd.DataFrame, verdicts: pd.DataFrame) -
             note=claims["id"].map(v["note"]).fillna("no verdict in verdicts.csv"),
         )
         cols = ["id", "text", "source", "reading", "predicate", "reproduced", "verdict", "note"]
-        extra = [c for c in VERDICT_OPTIONAL_COLUMNS if c in v.columns]  # where recorded
+        extra = [c for c in VERDICT_EXTRA_COLUMNS if c in v.columns]  # where recorded
         c = c.assign(**{k: claims["id"].map(v[k]).fillna("") for k in extra})
         cols += extra
         if not c["reading"].astype(bool).any():

@@ -9,18 +9,20 @@ scenario files ``config/scenarios/platform_drift/*.yaml``.
 from __future__ import annotations
 
 import json
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 import pandas as pd
 
-from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS, VERDICT_OPTIONAL_COLUMNS
+from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
 from pipeline.config import dotted_get
 from pipeline.platform_drift.paper import PAPER
 from pipeline.platform_drift.scenario import load_scenario
 from pipeline.report.figures import figure_blocks
 from pipeline.report.html import slugify
 from pipeline.report.model import (
+    VERDICT_EXTRA_COLUMNS,
     Block,
     PaperReport,
     Paragraph,
@@ -33,7 +35,7 @@ from pipeline.report.model import (
 __all__ = ["report"]
 
 
-def _read(path: Path, columns: list[str], optional: list[str] | None = None) -> pd.DataFrame:
+def _read(path: Path, columns: Sequence[str], optional: Sequence[str] = ()) -> pd.DataFrame:
     """A required CSV as text: ``columns`` and the ``optional`` ones it has, by name."""
     if not path.is_file():
         raise FileNotFoundError(f"{path}: required input is missing")
@@ -41,7 +43,7 @@ def _read(path: Path, columns: list[str], optional: list[str] | None = None) -> 
     missing = [c for c in columns if c not in df.columns]
     if missing:
         raise ValueError(f"{path}: missing columns {missing} (has {list(df.columns)})")
-    extra = [c for c in optional or [] if c in df.columns and c not in columns]
+    extra = [c for c in optional if c in df.columns and c not in columns]
     return df[[*columns, *extra]]
 
 
@@ -135,7 +137,7 @@ def report(inputs: ReportInputs) -> PaperReport:
     """The paper's report sections, built from ``inputs`` (see the module docstring)."""
     results = inputs.results
     audit = _read(results / "equation_audit.csv", AUDIT_COLUMNS)
-    verdicts = _read(results / "verdicts.csv", VERDICT_COLUMNS, VERDICT_OPTIONAL_COLUMNS)
+    verdicts = _read(results / "verdicts.csv", VERDICT_COLUMNS, VERDICT_EXTRA_COLUMNS)
     differs = audit[audit["status"] == "differs"]
     sections = [
         Section("summary", "Summary", _summary(results, audit, verdicts)),

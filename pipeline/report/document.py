@@ -19,7 +19,7 @@ from typing import Any
 import pandas as pd
 import yaml
 
-from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS, VERDICT_OPTIONAL_COLUMNS
+from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
 from pipeline.paper import Paper
 from pipeline.provenance import git_describe
 from pipeline.registry import load_paper
@@ -31,6 +31,7 @@ from pipeline.report.equations import (
     read_math,
 )
 from pipeline.report.model import (
+    VERDICT_EXTRA_COLUMNS,
     Block,
     Bullets,
     Document,
@@ -195,7 +196,7 @@ def _load(
     )
     audit = read_results_csv(inputs.results / "equation_audit.csv", AUDIT_COLUMNS)
     verdicts = read_results_csv(
-        inputs.results / "verdicts.csv", VERDICT_COLUMNS, VERDICT_OPTIONAL_COLUMNS
+        inputs.results / "verdicts.csv", VERDICT_COLUMNS, VERDICT_EXTRA_COLUMNS
     )
     score = score_row(paper.slug, paper.title, audit, verdicts)
     report = paper_report(paper, inputs)

@@ -27,6 +27,7 @@ from pipeline.report.html import format_value
 
 __all__ = [
     "FAILURE_WORDS",
+    "VERDICT_EXTRA_COLUMNS",
     "Block",
     "Bullets",
     "Document",
@@ -47,6 +48,9 @@ __all__ = [
 
 #: Verdict/status words that mark a table row as a failure (``Table.highlight``).
 FAILURE_WORDS = ("not_reproduced", "not_upheld", "differs", "missing")
+#: verdicts.csv columns after the contract's (pipeline.columns.VERDICT_COLUMNS) that the
+#: reports show where a file has them, selected by name
+VERDICT_EXTRA_COLUMNS = ("tolerance", "reason")
 
 
 @dataclass(frozen=True)

@@ -17,21 +17,31 @@ from typing import Any
 import pandas as pd
 import yaml
 
-from pipeline.columns import VERDICT_OPTIONAL_COLUMNS
-from pipeline.report.model import FAILURE_WORDS, Block, Paragraph, Section, Table
+from pipeline.report.model import (
+    FAILURE_WORDS,
+    VERDICT_EXTRA_COLUMNS,
+    Block,
+    Paragraph,
+    Section,
+    Table,
+)
 
-__all__ = ["group_label", "published_items", "published_section"]
+__all__ = ["group_label", "load_published", "published_items", "published_section"]
 
 
-def published_items(path: Path) -> list[Mapping[str, Any]]:
-    """The published items of ``config/published/<slug>.yaml`` (its ``items`` or ``values``
-    list); an absent file has none."""
+def load_published(path: Path) -> Mapping[str, Any]:
+    """``config/published/<slug>.yaml`` as a mapping; an absent file is empty."""
     if not path.is_file():
-        return []
+        return {}
     with path.open(encoding="utf-8") as fh:
         published = yaml.safe_load(fh) or {}
     if not isinstance(published, dict):
         raise ValueError(f"{path}: expected a mapping")
+    return published
+
+
+def published_items(published: Mapping[str, Any]) -> list[Mapping[str, Any]]:
+    """The published items of a published-values mapping (its ``items`` or ``values`` list)."""
     for key in ("items", "values"):
         items = published.get(key)
         if isinstance(items, list):
@@ -58,7 +68,7 @@ def _sort_key(label: str) -> tuple[tuple[float, str], str]:
 
 def published_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Section:
     """Numbers by the paper's table/figure (in its numbering), then the claims."""
-    items = {str(i.get("id")): i for i in published_items(published)}
+    items = {str(i.get("id")): i for i in published_items(load_published(published))}
     numbers = verdicts[verdicts["kind"] != "claim"]
     claims = verdicts[verdicts["kind"] == "claim"]
     blocks: list[Block] = [
@@ -71,7 +81,7 @@ def published_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Sect
     groups: dict[str, list[list[str]]] = {}
     marks: dict[str, list[int]] = {}
     cols = ["id", "quantity", "method", "published", "reproduced", "verdict", "note"]
-    cols += [c for c in VERDICT_OPTIONAL_COLUMNS if c in verdicts.columns]  # where recorded
+    cols += [c for c in VERDICT_EXTRA_COLUMNS if c in verdicts.columns]  # where recorded
     for r in numbers[cols].itertuples(index=False):
         label = group_label(items.get(str(r.id).split("/")[0]))
         rows = groups.setdefault(label, [])

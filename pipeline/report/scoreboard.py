@@ -72,6 +72,7 @@ def _compact_ids(ids: Sequence[str], all_ids: Sequence[str] = (), limit: int = 5
 
 _NOT_REPRODUCED_WHY = {
     "exact": "beyond the printed precision or stated tolerance",
+    "approximate": "outside the stated tolerance of a value read off a plot or printed as about",
     "statistical": "outside the Monte Carlo tolerance",
 }
 
