@@ -28,6 +28,7 @@ Conventions (for every paper):
 
 from __future__ import annotations
 
+import importlib
 import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -170,6 +171,14 @@ class Paper:
     #: ``config/schemas/<name>.schema.json`` validating the paper's section of config.yaml
     #: (``<slug>: {...}``, its ``Context.settings``); None: the paper takes no settings
     settings_schema: str | None = None
+    #: ``"module:function"``: the report sections the paper contributes, as
+    #: ``function(inputs: pipeline.report.model.ReportInputs) -> PaperReport`` (its page
+    #: ``reports/<slug>.html`` and its section of the combined report are rendered from
+    #: them); empty: the paper contributes none (the combined report has its shared parts)
+    report: str = ""
+    #: symbol stems with a fixed rendering in the PDF's mathematics (stem -> Typst math
+    #: source, e.g. ``{"xt": "tilde(x)"}``: a measured x)
+    math_stems: Mapping[str, str] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         if not SLUG_PATTERN.match(self.slug):
@@ -213,6 +222,17 @@ class Paper:
     @property
     def figure_files(self) -> list[str]:
         return [f.file for f in self.figures]
+
+    def report_function(self) -> Callable[[Any], Any]:
+        """The function ``report`` names (a function returning no sections if none)."""
+        if not self.report:
+            from pipeline.report.model import PaperReport
+
+            return lambda inputs: PaperReport(sections=[], parts={"published": None})
+        module, _, name = self.report.partition(":")
+        if not name:
+            raise ValueError(f"paper {self.slug}: report {self.report!r} is not 'module:function'")
+        return getattr(importlib.import_module(module), name)
 
     def step(self, name: str) -> Step:
         for s in self.steps:

@@ -21,16 +21,19 @@ import pandas as pd
 import pytest
 from matplotlib.figure import Figure
 
+from pipeline.altimeter_attitude import report as R
 from pipeline.altimeter_attitude.columns import (
     ALTIMETER_FILTERS,
     RMS_SUMMARY_COLUMNS,
     SWEEP_COLUMNS,
 )
+from pipeline.altimeter_attitude.paper import PAPER
 from pipeline.altimeter_attitude.scenario import load_scenario
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
-from pipeline.report import altimeter_attitude as R
 from pipeline.report import html as H
+from pipeline.report.model import Bullets, ReportInputs
+from pipeline.report.page_html import render_page
 from pipeline.scenarios import scenario_names
 
 REPO = Path(__file__).resolve().parents[1]
@@ -229,6 +232,21 @@ def section_html(text: str, anchor: str) -> str:
     return text[start:i]
 
 
+def plain(html: str) -> str:
+    """``html`` without the class the renderer gives cells that read as numbers."""
+    return html.replace(' class="num"', "")
+
+
+def inputs(results: Path, figures: Path | None = None) -> ReportInputs:
+    return ReportInputs(
+        results,
+        SCEN_DIR,
+        REPO / "config" / "published" / "altimeter_attitude.yaml",
+        figures if figures is not None else results / "figures",
+        {"published_scenario": "paper"},
+    )
+
+
 def fmt3(x) -> str:
     return "—" if x is None or (isinstance(x, float) and math.isnan(x)) else f"{float(x):.3f}"
 
@@ -236,13 +254,7 @@ def fmt3(x) -> str:
 @pytest.fixture(scope="module")
 def built(tmp_path_factory) -> dict:
     paths = make_inputs(tmp_path_factory.mktemp("aa"))
-    R.build_page(
-        paths["results"],
-        SCEN_DIR,
-        paths["out"],
-        summaries=paths["summaries"],
-        figures_dir=paths["figures"],
-    )
+    R.build_page(paths["results"], SCEN_DIR, paths["out"], figures_dir=paths["figures"])
     paths["text"] = paths["out"].read_text(encoding="utf-8")
     return paths
 
@@ -281,12 +293,16 @@ def test_verdict_and_audit_counts_equal_the_csv(built):
         "claims": Counter(verdicts.loc[verdicts["kind"] == "claim", "verdict"]),
         "audit": Counter(audit["status"]),
     }
-    p = parse(section_html(built["text"], "summary"))
-    shown: dict[str, dict[str, int]] = {"values": {}, "claims": {}, "audit": {}}
-    for a, text in p.spans:
-        if "data-group" in a:
-            word = a.get("data-verdict") or a.get("data-status")
-            shown[a["data-group"]][word] = int(text)
+    summary = R.report(inputs(built["results"], built["figures"])).section("summary")
+    (counts,) = [b for b in summary.blocks if isinstance(b, Bullets)][:1]
+    shown: dict[str, dict[str, int]] = {}
+    for group, item in zip(("audit", "values", "claims"), counts.items, strict=True):
+        tail = item.split(", ", 1)[1].rstrip(".")
+        shown[group] = {
+            w.replace(" ", "_"): int(n) for n, w in re.findall(r"(\d+) ([a-z ]+)", tail)
+        }
+    for item in counts.items:  # every count is on the page
+        assert H.escape(item) in section_html(built["text"], "summary")
     for group in expected:
         assert {k: v for k, v in shown[group].items() if v} == dict(expected[group]), group
     # the standard words are shown even at zero
@@ -298,12 +314,12 @@ def test_verdict_and_audit_counts_equal_the_csv(built):
 def test_headline_reads_published_and_ours(built):
     verdicts = pd.read_csv(built["results"] / "verdicts.csv", dtype=str, keep_default_na=False)
     summary = pd.read_csv(built["results"] / "paper" / "rms_summary.csv").set_index("filter")
-    sec = section_html(built["text"], "summary")
+    sec = plain(section_html(built["text"], "summary"))
     for r in verdicts[verdicts["kind"] != "claim"].itertuples():
         ours = fmt3(summary.at[r.method, r.quantity])
         assert f"<td>{H.escape(r.id)}</td>" in sec
         assert f"<td>{H.escape(r.published)}</td>" in sec
-        assert f'<td class="num">{ours}</td>' in sec, (r.id, ours)
+        assert f"<td>{ours}</td>" in sec, (r.id, ours)
     lkf = "/".join(fmt3(summary.at["linear_kf", f"{a}_rms_deg"]) for a in ("roll", "pitch"))
     assert f"linear_kf roll/pitch RMS {lkf} deg" in sec
     # every not-upheld claim is stated with its evidence
@@ -314,14 +330,14 @@ def test_headline_reads_published_and_ours(built):
 def test_every_rms_summary_value_appears_formatted(built):
     for path in built["summaries"]:
         name = path.parent.name
-        sec = section_html(built["text"], f"results-{H.slugify(name)}")
+        sec = plain(section_html(built["text"], f"results-{H.slugify(name)}"))
         df = pd.read_csv(path)
         assert len(df) == len(ALTIMETER_FILTERS)
         for row in df.itertuples(index=False):
             cells = [f"<td>{row.filter}</td>"] + [
-                f'<td class="num">{fmt3(getattr(row, c))}</td>' for c in RMS_SUMMARY_COLUMNS[1:-1]
+                f"<td>{fmt3(getattr(row, c))}</td>" for c in RMS_SUMMARY_COLUMNS[1:-1]
             ]
-            cells.append(f'<td class="num">{int(row.n_runs)}</td>')
+            cells.append(f"<td>{int(row.n_runs)}</td>")
             assert "".join(cells) in sec, (name, row.filter)
 
 
@@ -356,19 +372,19 @@ def test_figure_captions_name_the_paper_figure(built):
         m = re.match(r"fig(\d+)_", name)
         if m:
             assert f"paper Fig. {m.group(1)})" in sec, name
-    assert '<table class="data" id="sweep-table">' in sec
+    assert "<caption>sweep.csv</caption>" in section_html(sec, "sweep")
 
 
 def test_sweep_table_holds_every_point(built):
     sweep = pd.read_csv(built["results"] / "sweep.csv")
-    sec = section_html(built["text"], "sweep")
+    sec = plain(section_html(built["text"], "sweep"))
     for r in sweep.itertuples():
-        assert f'<td class="num">{fmt3(r.roll_rms_deg)}</td>' in sec
-        assert f'<td class="num">{fmt3(r.pitch_rms_deg)}</td>' in sec
+        assert f"<td>{fmt3(r.roll_rms_deg)}</td>" in sec
+        assert f"<td>{fmt3(r.pitch_rms_deg)}</td>" in sec
 
 
 def test_findings_are_computed(built):
-    sec = section_html(built["text"], "findings")
+    sec = plain(section_html(built["text"], "findings"))
     for path in built["summaries"]:
         s = pd.read_csv(path).set_index("filter")
         for angle in ("roll", "pitch"):
@@ -376,7 +392,7 @@ def test_findings_are_computed(built):
             best = r.idxmin()
             assert (
                 f"<td>{path.parent.name}</td><td>{angle}</td><td>{best}</td>"
-                f'<td class="num">{fmt3(r.min())}</td>'
+                f"<td>{fmt3(r.min())}</td>"
             ) in sec
             a, b = (
                 s.at["linear_kf", f"{angle}_rms_deg"],
@@ -391,7 +407,7 @@ def test_findings_are_computed(built):
 
 
 def test_assumptions_show_each_decision_with_its_value(built):
-    sec = section_html(built["text"], "assumptions")
+    sec = plain(section_html(built["text"], "assumptions"))
     for f in sorted(SCEN_DIR.glob("*.yaml")):
         sc = load_scenario(f)
         sub = section_html(sec, f"assumptions-{H.slugify(f.stem)}")
@@ -402,33 +418,29 @@ def test_assumptions_show_each_decision_with_its_value(built):
 
 
 def test_provenance_shown(built):
-    sec = section_html(built["text"], "provenance")
+    sec = plain(section_html(built["text"], "provenance"))
     for path in built["summaries"]:
         prov = json.loads((path.parent / "provenance.json").read_text(encoding="utf-8"))
         sub = section_html(sec, f"provenance-{H.slugify(path.parent.name)}")
         assert H.escape(prov["git_describe"]) in sub and prov["config_sha256"] in sub
-        assert f"<dd>{prov['seeds']['seed']}</dd>" in sub
+        assert f"<td>seeds.seed</td><td>{prov['seeds']['seed']}</td>" in sub
         for pkg, version in prov["packages"].items():
             assert f"<td>{H.escape(pkg)}</td><td>{H.escape(version)}</td>" in sub
 
 
 def test_deterministic(built, tmp_path):
     out = R.build_page(
-        built["results"],
-        SCEN_DIR,
-        tmp_path / "again.html",
-        summaries=built["summaries"],
-        figures_dir=built["figures"],
+        built["results"], SCEN_DIR, tmp_path / "again.html", figures_dir=built["figures"]
     )
     assert out.read_bytes() == built["out"].read_bytes()
 
 
 def test_missing_audit_and_figures_say_not_available(tmp_path):
     paths = make_inputs(tmp_path, figures=False, audit=False)
-    text = R.render_page(paths["results"], SCEN_DIR)  # summaries discovered
+    text = render_page(PAPER, R.report(inputs(paths["results"])))  # summaries discovered
     assert parse(text).errors == []
     assert "equation_audit.csv not available" in text
-    assert f"{FIGURES[0]}: not available" in text and "<img" not in text
+    assert f"({FIGURES[0]}): not available" in text and "<img" not in text
     for s in SECTIONS:
         assert f'<section id="{s}">' in text
 
@@ -442,23 +454,21 @@ def test_missing_verdicts_raise(tmp_path):
 
 
 def test_page_step(tmp_path, monkeypatch):
-    """The workflow's page step (pipeline.altimeter_attitude.steps.page) with its named inputs."""
-    from pipeline.altimeter_attitude.steps import page
+    """The workflow's page step (pipeline.report.page_html.page_step) with its named inputs."""
+    from pipeline.report.page_html import page_step
 
-    monkeypatch.chdir(REPO)  # the step names the scenario directory relative to the repo
+    monkeypatch.chdir(REPO)
     paths = make_inputs(tmp_path)
     out = tmp_path / "smk" / "altimeter_attitude.html"
     said = []
     inputs = {
         "audit": str(paths["results"] / "equation_audit.csv"),
-        "verdicts": str(paths["results"] / "verdicts.csv"),
-        "summaries": [str(p) for p in paths["summaries"]],
-        "sweep": str(paths["results"] / "sweep.csv"),
+        "published": str(REPO / "config" / "published" / "altimeter_attitude.yaml"),
         "figures": [str(paths["figures"] / f) for f in [*FIGURES, SWEEP_FIGURE]],
         "scenario_files": sorted(str(p) for p in SCEN_DIR.glob("*.yaml")),
     }
-    params = {"published_scenario": "paper"}
-    page(inputs, {"page": str(out)}, params, said.append)
+    params = {"paper": "altimeter_attitude", "settings": {"published_scenario": "paper"}}
+    page_step(inputs, {"page": str(out)}, params, said.append)
     text = out.read_text(encoding="utf-8")
     assert text.count("data:image/png;base64,") == len(FIGURES) + 1
     assert said == [f"wrote {out}"]

@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import os
 import re
+import shutil
 import struct
 import subprocess
 import sys
@@ -25,6 +26,7 @@ import yaml
 
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS, VERDICTS
 from pipeline.north_finding import figures as F
+from pipeline.north_finding import report as R
 from pipeline.north_finding.columns import (
     ERROR_BUDGET_COLUMNS,
     ERROR_SOURCES,
@@ -34,8 +36,9 @@ from pipeline.north_finding.columns import (
     METHOD_QUANTITIES,
     SENSITIVITY_COLUMNS,
 )
+from pipeline.north_finding.report_results import resolve_dotted
 from pipeline.report import html as H
-from pipeline.report import north_finding as R
+from pipeline.report.model import ReportInputs, Table
 
 TRUTH = {
     "phi_deg": 50.0,
@@ -625,10 +628,24 @@ def test_summary_counts_equal_fixture_counts(built):
     audit = pd.read_csv(built["results"] / "equation_audit.csv", dtype=str)
     expected_v = Counter(verdicts["verdict"])
     expected_a = Counter(audit["status"])
-    p = parse(built["out"].read_text(encoding="utf-8"))
-    shown_v = {a["data-verdict"]: int(t) for a, t in p.spans if "data-verdict" in a}
-    shown_a = {a["data-status"]: int(t) for a, t in p.spans if "data-status" in a}
+    rep = R.report(
+        ReportInputs(built["results"], built["scenarios"], built["published"], built["figures"])
+    )
+    blocks = rep.section("summary").blocks
+    text = blocks[0].text
+    m = re.search(r"verdicts\.csv has \d+ verdicts: (.*?)\. The equation audit", text)
+    shown_v = {w.replace(" ", "_"): int(n) for n, w in re.findall(r"(\d+) ([a-z ]+)", m.group(1))}
+    m = re.search(r"the SymPy derivation: (.*?)\. Where", text)
+    shown_a = {w.replace(" ", "_"): int(n) for n, w in re.findall(r"(\d+) ([a-z ]+)", m.group(1))}
     assert set(shown_v) >= set(VERDICTS)
+    # the verdicts-by-kind table counts the same rows
+    (by_kind,) = [b for b in blocks if isinstance(b, Table)]
+    assert {r[0]: sum(int(c) for c in r[1:]) for r in by_kind.rows if r[0]} == {
+        k: v for k, v in shown_v.items() if v
+    }
+    assert '<span class="v-not_reproduced">not_reproduced</span>' in built["out"].read_text(
+        encoding="utf-8"
+    )
     assert {k: v for k, v in shown_v.items() if v} == dict(expected_v)
     assert {k: v for k, v in shown_a.items() if v} == dict(expected_a)
     assert sum(shown_v.values()) == len(verdicts)
@@ -646,10 +663,10 @@ def test_differs_rows_are_highlighted_with_notes(built):
 
 def test_assumptions_show_resolved_values(built):
     text = built["out"].read_text(encoding="utf-8")
-    assert '<td>noise.n_avg</td><td class="num">' not in text  # values are rendered as text cells
-    assert "<td>noise.n_avg</td><td>1000000</td>" in text
+    # values as the config writes them (not reformatted as numbers: 1000000, not 1e+06)
+    assert '<td>noise.n_avg</td><td class="num">1000000</td>' in text
     assert "<td>misalignment.rows.0</td><td>[0.0, 10.0, -10.0]</td>" in text
-    assert "<td>noise.n_avg</td><td>1000</td>" in text  # low_avg scenario
+    assert '<td>noise.n_avg</td><td class="num">1000</td>' in text  # low_avg scenario
 
 
 def test_optional_inputs_absent_say_not_available(tmp_path):
@@ -659,25 +676,12 @@ def test_optional_inputs_absent_say_not_available(tmp_path):
     assert parse(text).errors == []
     assert "sensitivity.csv: not available" in text
     assert "Benchmarks (results/north_finding/benchmarks/*.tsv): not available" in text
-    assert "fig1_roll.png: not available" in text  # figures not built
+    assert "Fig. 1 (fig1_roll.png): not available." in text  # figures not built
 
 
-def test_report_cli_is_deterministic(built, tmp_path):
-    out = tmp_path / "page.html"
-    assert (
-        R.main(
-            [
-                "--results-dir",
-                str(built["results"]),
-                "--scenarios-dir",
-                str(built["scenarios"]),
-                "--published",
-                str(built["published"]),
-                "--out",
-                str(out),
-            ]
-        )
-        == 0
+def test_page_is_deterministic(built, tmp_path):
+    out = R.build_page(
+        built["results"], built["scenarios"], built["published"], tmp_path / "page.html"
     )
     assert out.read_bytes() == built["out"].read_bytes()
 
@@ -713,18 +717,35 @@ def test_missing_decision_field_raises_naming_file_and_field(tmp_path):
 
 def test_resolve_dotted_indexes_lists_and_rejects_missing():
     data = {"a": {"b": [10, {"c": 3}]}}
-    assert R.resolve_dotted(data, "a.b.1.c") == 3
-    assert R.resolve_dotted(data, "a.b.0") == 10
+    assert resolve_dotted(data, "a.b.1.c") == 3
+    assert resolve_dotted(data, "a.b.0") == 10
     for bad in ("a.x", "a.b.2", "a.b.0.c", "z"):
         with pytest.raises(ValueError, match=re.escape(bad)):
-            R.resolve_dotted(data, bad, source="s.yaml")
+            resolve_dotted(data, bad, source="s.yaml")
 
 
 def test_html_helpers():
+    from pipeline.report.blocks_html import render_block
+    from pipeline.report.model import Figure, frame_table
+
     df = pd.DataFrame({"id": ["a<b"], "x": [0.1 + 0.2], "verdict": ["not_reproduced"]})
-    t = H.table(df, class_column="verdict")
+    t = render_block(frame_table(df, status="verdict"), status_rows=True)
     assert '<tr class="v-not_reproduced">' in t and "a&lt;b" in t and "0.3<" in t
     assert parse(t).errors == []
     with pytest.raises(ValueError):
         H.png_data_uri(b"GIF89a")
-    assert H.figure(None, alt="f", caption="c").count("not available") == 1
+    missing = render_block(Figure("/nonexistent/f.png", "c", "Fig. 1"))
+    assert missing.count("not available") == 1 and "<img" not in missing
+
+
+def test_tolerance_and_reason_shown_where_verdicts_csv_has_them(built, tmp_path):
+    results = tmp_path / "results"
+    shutil.copytree(built["results"], results)
+    v = pd.read_csv(results / "verdicts.csv", dtype=str, keep_default_na=False)
+    v = v.assign(tolerance=[f"tol {i}" for i in range(len(v))], reason="a reason")
+    v.to_csv(results / "verdicts.csv", index=False)
+    out = R.build_page(results, built["scenarios"], built["published"], tmp_path / "p.html")
+    text = out.read_text(encoding="utf-8")
+    assert "<th>tolerance</th><th>reason</th>" in text
+    assert "<td>tol 0</td><td>a reason</td>" in text
+    assert "<th>tolerance</th>" not in built["out"].read_text(encoding="utf-8")

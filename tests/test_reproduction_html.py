@@ -6,8 +6,9 @@ Two cases, each checked in full:
   (on a fresh clone, from the reduced workflow run of ``results_repo``, tests/conftest.py);
 * ``synthetic``: a small results tree written here (verdicts and audit rows for every
   published item of the repository's ``config/published``, MathML, distinct PNG figures,
-  provenance, benchmarks) with the per-paper pages rendered by the papers' own report
-  modules. It always runs, so the suite never passes without checking a report.
+  provenance, benchmarks) with the per-paper pages rendered from the papers' report sections
+  (``pipeline.report.page_html``). It always runs, so the suite never passes without checking a
+  report.
 
 Checks: the HTML parses (balanced elements, well-formed MathML), every ``#id`` link
 resolves, every relative href exists beside the report, every image is a data URI and
@@ -38,6 +39,7 @@ import pandas as pd
 import pytest
 import yaml
 
+from pipeline.report import html as H
 from pipeline.report.document import Document, build_document
 from pipeline.report.reproduction_html import render_html, write_html
 from tests.workflow_harness import NEEDS_RUN
@@ -63,17 +65,9 @@ def _png(index: int, path: Path) -> None:
 
 
 def _figure_names(slug: str) -> list[str]:
-    if slug == "north_finding":
-        from pipeline.north_finding.figures import FIGURE_FILES
+    from pipeline.registry import load_paper
 
-        return [f"{s}.png" for s in FIGURE_FILES]
-    if slug == "platform_drift":
-        from pipeline.platform_drift.figures import FIGURES
-
-        return [f"fig{n}_{name}.png" for name, (n, _) in FIGURES.items()] + ["fig9_latitude.png"]
-    from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
-
-    return [*FIGURES, SWEEP_FIGURE]
+    return load_paper(slug).figure_files
 
 
 def _synthetic_verdicts(published: dict) -> pd.DataFrame:
@@ -99,9 +93,9 @@ def _synthetic_verdicts(published: dict) -> pd.DataFrame:
 def _synthetic_tree(base: Path) -> Path:
     """A small but complete results tree (see the module docstring); returns its root."""
     from pipeline.config import sha256_of
-    from pipeline.report import altimeter_attitude as aa
-    from pipeline.report import north_finding as nf
-    from pipeline.report import platform_drift as pd_page
+    from pipeline.registry import load_paper
+    from pipeline.report.model import ReportInputs
+    from pipeline.report.page_html import build_page
 
     shutil.copytree(ROOT / "config", base / "config")
     fig_index = 0
@@ -172,14 +166,9 @@ def _synthetic_tree(base: Path) -> Path:
         (notebooks / f"{slug}.html").write_text(
             f"<!DOCTYPE html><html><body><p>{slug}</p></body></html>", encoding="utf-8"
         )
-        scen = base / "config" / "scenarios" / slug
-        out = base / "reports" / f"{slug}.html"
-        if slug == "north_finding":
-            nf.build_page(rdir, scen, base / "config" / "published" / f"{slug}.yaml", out)
-        elif slug == "platform_drift":
-            pd_page.build_page(rdir, scen, out)
-        else:
-            aa.build_page(rdir, scen, out, published_scenario="paper")
+        settings = yaml.safe_load((base / "config" / "config.yaml").read_text("utf-8")).get(slug)
+        inputs = ReportInputs.under(slug, base / "results", base / "config", settings)
+        build_page(load_paper(slug), inputs, base / "reports" / f"{slug}.html")
     return base
 
 
@@ -326,6 +315,38 @@ def test_sections_in_the_documented_order(built):
             "Findings beyond the paper",
             "Notebook",
         ], slug
+
+
+def _figures(section):
+    from pipeline.report.model import Figure, walk
+
+    return [b for s in walk([section]) for b in s.blocks if isinstance(b, Figure)]
+
+
+def test_pages_and_report_show_the_same_figures(built):
+    """The combined report and each page are rendered from the same sections: every figure of
+    a paper (label, caption, file) is on its page and in its section of the report, and the
+    report reads no page (removing the pages changes nothing)."""
+    for slug, sec in zip(SLUGS, built.doc.sections[1:-1], strict=True):
+        figs = _figures(sec)
+        assert figs, slug
+        page = (built.reports / f"{slug}.html").read_text(encoding="utf-8")
+        for f in figs:
+            caption = f"<figcaption><strong>{H.escape(f.label)}</strong> "
+            caption += f"{H.escape(f.caption)}</figcaption>"
+            assert caption in page, (slug, f.label)
+            assert f.in_paper == f.label.startswith("Fig. "), f.label
+    if built.case == "synthetic":
+        moved = built.reports.parent / "pages-moved"
+        moved.mkdir()
+        for slug in SLUGS:
+            (built.reports / f"{slug}.html").rename(moved / f"{slug}.html")
+        try:
+            again = render_html(build_document(built.root))
+        finally:
+            for slug in SLUGS:
+                (moved / f"{slug}.html").rename(built.reports / f"{slug}.html")
+        assert again == built.html
 
 
 # --------------------------------------------------------------------------- 2. the counts

@@ -56,8 +56,7 @@ def compile_math(snippets: list[str], tmp_path: Path) -> list:
         ("Omega", "Omega"),
         ("x", "x"),
         ("omega_x", "omega_x"),
-        ("omegat_x", "tilde(omega)_x"),
-        ("ft_x", "tilde(f)_x"),
+        ("omegat_x", '"omegat"_x'),
         ("c_q", "c_q"),
         ("Delta_t", "Delta_t"),
         ("DeltaV_x", "Delta V_x"),
@@ -82,6 +81,16 @@ def compile_math(snippets: list[str], tmp_path: Path) -> list:
 def test_symbol_names(name, expected):
     assert symbol_name(name) == expected
     assert typst_math(sp.Symbol(name)) == expected
+
+
+def test_a_papers_stems_are_passed_not_built_in():
+    from pipeline.altimeter_attitude.paper import PAPER
+
+    stems = PAPER.math_stems
+    assert symbol_name("omegat_x", stems) == "tilde(omega)_x"
+    assert symbol_name("ft_x", stems) == "tilde(f)_x"
+    assert typst_math(sp.Symbol("ft_x") + 1, stems=stems) == "tilde(f)_x + 1"
+    assert symbol_name("ft_x") == "f t_x"  # two letters side by side without the paper's stems
 
 
 x, y, t, theta = sp.symbols("x y t theta", real=True)

@@ -7,11 +7,12 @@ Kalman filter on the third DCM row against a UKF (100-run Monte Carlo; Figs. 2-1
 
 from __future__ import annotations
 
+from pipeline.altimeter_attitude.columns import ALTIMETER_FILTERS
 from pipeline.altimeter_attitude.scenario import load_scenario
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
 from pipeline.paper import Context, FigureSpec, Paper, Step
 
-__all__ = ["PAPER", "TITLE", "CITATION"]
+__all__ = ["PAPER", "TITLE", "CITATION", "MATH_STEMS"]
 
 TITLE = "Strapdown attitude estimation using IMU and altimeter integration for maneuvering vehicles"
 CITATION = (
@@ -19,16 +20,48 @@ CITATION = (
     "Persian journal paper with an English abstract; its journal and year are not in the seed text"
 )
 
+#: the sensor outputs: omegat and ft are the measured angular rate and specific force
+MATH_STEMS = {"omegat": "tilde(omega)", "ft": "tilde(f)"}
+
+# Figure file -> caption (after its label). The paper's figure number is in the file name.
+_FIGURE_TEXT: dict[str, str] = {
+    "fig2_third_row.png": "nominal trajectory: the third-row DCM elements C31, C32, C33 against "
+    "time.",
+    "fig3_specific_force.png": "specific force measured by the accelerometers (body axes). Its "
+    "large vertical-plane part is why accelerometer levelling fails.",
+    "fig4_vertical_channel.png": "vertical channel: down velocity V_d and altitude h against time.",
+    "fig5_angular_rates.png": "angular rates measured by the gyros (body axes).",
+    "fig6_roll_pitch.png": "true roll and pitch against time.",
+    "fig7_lkf_rms_error.png": "linear Kalman filter: Monte Carlo RMS of the roll and pitch "
+    "estimation errors against time (the paper reads its roll/pitch RMS off this figure).",
+    "fig8_lkf_c_rms.png": "linear Kalman filter: Monte Carlo RMS error of the DCM parameters "
+    "c1, c2, c3.",
+    "fig9_lkf_sigma.png": "linear Kalman filter: RMS over runs of the filter's own roll and "
+    "pitch standard deviation (compare with Fig. 7).",
+    "fig10_norm_error.png": "linear Kalman filter: RMS of the normalisation error 1 - c^T c.",
+    "fig11_ukf_sigma.png": "UKF: RMS over runs of the filter's own roll and pitch standard "
+    "deviation (compare with Fig. 12).",
+    "fig12_ukf_rms_error.png": "UKF: Monte Carlo RMS of the roll and pitch estimation errors "
+    "against time (the paper reads its UKF roll/pitch RMS off this figure).",
+    "fig_compare_filters.png": "roll and pitch errors of every filter of this reproduction ("
+    + ", ".join(ALTIMETER_FILTERS)
+    + ") in the published scenario.",
+    SWEEP_FIGURE: "one-at-a-time sweep around the published scenario; RMS roll and pitch error "
+    "against each swept parameter (values in the table below).",
+}
+
 
 def _number(file: str) -> int | None:
     head = file.split("_", 1)[0]
     return int(head[3:]) if head[3:].isdigit() else None
 
 
-PAPER_FIGURES = tuple(
-    FigureSpec(f, _number(f), f"Fig. {_number(f)}" if _number(f) else "not in the paper")
-    for f in [*FIGURES, SWEEP_FIGURE]
-)
+def _caption(file: str) -> str:
+    n = _number(file)
+    return f"(paper Fig. {n}): {_FIGURE_TEXT[file]}" if n is not None else _FIGURE_TEXT[file]
+
+
+PAPER_FIGURES = tuple(FigureSpec(f, _number(f), _caption(f)) for f in [*FIGURES, SWEEP_FIGURE])
 
 
 # --------------------------------------------------------------------------- workflow steps
@@ -112,8 +145,9 @@ STEPS = (
     ),
     Step(
         "report",
-        "pipeline.altimeter_attitude.steps:page",
+        "pipeline.report.page_html:page_step",
         inputs=lambda ctx: {
+            **ctx.published_inputs,
             "audit": f"{ctx.results}/equation_audit.csv",
             "verdicts": f"{ctx.results}/verdicts.csv",
             "summaries": ctx.per_scenario("rms_summary.csv"),
@@ -125,7 +159,7 @@ STEPS = (
             "figures": [ctx.figure(f) for f in [*FIGURES, SWEEP_FIGURE]],
         },
         outputs=lambda ctx: {"page": ctx.page},
-        params=lambda ctx: {"published_scenario": ctx.settings["published_scenario"]},
+        params=lambda ctx: {"paper": ctx.slug, "settings": dict(ctx.settings)},
         report={"page": ("Pages", "page")},
     ),
 )
@@ -138,4 +172,6 @@ PAPER = Paper(
     figures=PAPER_FIGURES,
     steps=STEPS,
     settings_schema="altimeter_attitude_config",
+    report="pipeline.altimeter_attitude.report:report",
+    math_stems=MATH_STEMS,
 )

@@ -7,7 +7,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from pathlib import Path
 
-__all__ = ["simulate", "sweep", "verdicts", "figures", "sweep_figure", "page"]
+__all__ = ["simulate", "sweep", "verdicts", "figures", "sweep_figure"]
 
 
 def simulate(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
@@ -63,20 +63,3 @@ def sweep_figure(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callab
 
     published = published_rms(load_yaml(inputs["published"]))
     write_sweep(Path(inputs["sweep"]), Path(outputs["png"]), published)
-
-
-def page(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
-    from pipeline.report.altimeter_attitude import build_page
-
-    build_page(
-        Path(inputs["audit"]).parent,
-        Path(inputs["scenario_files"][0]).parent,
-        outputs["page"],
-        published_scenario=params["published_scenario"],
-        audit=inputs["audit"],
-        verdicts=inputs["verdicts"],
-        summaries=list(inputs["summaries"]),
-        sweep=inputs["sweep"],
-        figures_dir=Path(inputs["figures"][0]).parent,
-    )
-    log(f"wrote {outputs['page']}")

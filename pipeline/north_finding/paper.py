@@ -26,29 +26,29 @@ _BOX = (
     "(box 25–75 %, whiskers 5–95 %, line median); hollow circle: real sensor without noise; "
     "red diamond: the percent error printed in the paper. Log scale."
 )
-#: figure file stem -> caption
+#: figure file stem -> caption (after the label "Fig. N" or "Extra fig. k")
 FIGURE_CAPTIONS: dict[str, str] = {
     "fig1_roll": (
-        f"Fig. 1 (paper Fig. 1, Table 1): roll φ percent error of levelling methods L1–L4. {_BOX}"
+        f"(paper Fig. 1, Table 1): roll φ percent error of levelling methods L1–L4. {_BOX}"
     ),
     "fig2_pitch": (
-        f"Fig. 2 (paper Fig. 2, Table 2): pitch θ percent error of levelling methods L1–L4. {_BOX}"
+        f"(paper Fig. 2, Table 2): pitch θ percent error of levelling methods L1–L4. {_BOX}"
     ),
     "fig3_azimuth": (
-        f"Fig. 3 (paper Fig. 3, Table 9): azimuth ψ percent error of azimuth methods "
+        f"(paper Fig. 3, Table 9): azimuth ψ percent error of azimuth methods "
         f"A1c1, A1c2, A2, A3, A4, A5. {_BOX}"
     ),
     "fig4_bias": (
-        f"Fig. 4 (paper Fig. 4, Tables 3 and 10): percent error of the accelerometer bias "
+        f"(paper Fig. 4, Tables 3 and 10): percent error of the accelerometer bias "
         f"(levelling method 5) and the gyro bias (azimuth method 4). {_BOX}"
     ),
     "fig5_scale": (
-        f"Fig. 5 (paper Fig. 5, Tables 4, 11, 12): percent error of the accelerometer scale factor "
+        f"(paper Fig. 5, Tables 4, 11, 12): percent error of the accelerometer scale factor "
         f"(method L5), the gyro scale factor (A4, A5, A6) and its first-order approximation "
         f"(A5, A6). {_BOX}"
     ),
     "fig6_sensitivity": (
-        "Fig. 6 (not in the paper): Monte Carlo RMS percent error of the azimuth estimate against "
+        "Monte Carlo RMS percent error of the azimuth estimate against "
         "the number of samples averaged per table position (log–log). Dashed vertical line: the "
         "scenario's default n_avg; short ticks at the right edge: the published percent error of "
         "each method, in the method's colour. The paper does not state n_avg; this figure shows "
@@ -129,7 +129,7 @@ STEPS = (
     ),
     Step(
         "report",
-        "pipeline.north_finding.steps:page",
+        "pipeline.report.page_html:page_step",
         inputs=lambda ctx: {
             "audit": f"{ctx.results}/equation_audit.csv",
             "verdicts": f"{ctx.results}/verdicts.csv",
@@ -140,6 +140,7 @@ STEPS = (
             "figures": _figures(ctx)["png"],
         },
         outputs=lambda ctx: {"page": ctx.page},
+        params=lambda ctx: {"paper": ctx.slug, "settings": dict(ctx.settings)},
         report={"page": ("Pages", "page")},
     ),
 )
@@ -152,4 +153,5 @@ PAPER = Paper(
     figures=PAPER_FIGURES,
     steps=STEPS,
     settings_schema="north_finding_config",
+    report="pipeline.north_finding.report:report",
 )

@@ -8,7 +8,7 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
-__all__ = ["simulate", "verdicts", "figures", "page"]
+__all__ = ["simulate", "verdicts", "figures"]
 
 
 def simulate(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
@@ -35,20 +35,6 @@ def figures(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -
     out_dir = Path(outputs["png"][0]).parent
     written = run(Path(inputs["mc_trials"]).parent, inputs["published"], out_dir)
     _check_written(written, [*outputs["png"], *outputs["svg"]])
-
-
-def page(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
-    """The paper's HTML page, reports/north_finding.html."""
-    from pipeline.report.north_finding import build_page
-
-    build_page(
-        results_dir=Path(inputs["audit"]).parent,
-        scenarios_dir=Path(inputs["scenario_files"][0]).parent,
-        published=inputs["published"],
-        out=outputs["page"],
-        figures_dir=Path(inputs["figures"][0]).parent,
-    )
-    log(f"wrote {outputs['page']}")
 
 
 def _check_written(written: Any, expected: list[str]) -> None:

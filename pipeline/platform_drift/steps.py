@@ -7,7 +7,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from pathlib import Path
 
-__all__ = ["simulate", "verdicts", "figures", "latitude_sweep", "page"]
+__all__ = ["simulate", "verdicts", "figures", "latitude_sweep"]
 
 
 def simulate(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
@@ -45,11 +45,3 @@ def latitude_sweep(inputs: Mapping, outputs: Mapping, params: Mapping, log: Call
     frame = sweep(inputs["scenario"], log=log)
     write_csv(outputs["csv"], frame, SWEEP_COLUMNS)
     plot(frame, outputs["png"])  # and the SVG beside it
-
-
-def page(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
-    from pipeline.report.platform_drift import build_page
-
-    scenarios_dir = Path(inputs["scenario_files"][0]).parent
-    build_page(Path(inputs["audit"]).parent, scenarios_dir, outputs["page"])
-    log(f"wrote {outputs['page']}")

@@ -5,16 +5,10 @@ base64 ``data:`` URIs, and there is no JavaScript, external stylesheet or CDN.
 The output is deterministic (no timestamps), so rebuilding a page from the same
 inputs gives the same bytes.
 
-Typical use::
-
-    from pipeline.report import html as H
-
-    body = H.section("Summary", H.paragraph("..."), anchor="summary")
-    body += H.section("Verdicts", H.table(df, class_column="verdict"), anchor="verdicts")
-    H.write_atomic("reports/x.html", H.page("Title", body))
-
-Every function returns an HTML *fragment* (a ``str``) except :func:`page`
-(a whole document) and :func:`write_atomic`.
+The pages are rendered from the document model (:mod:`pipeline.report.model`) by
+:mod:`pipeline.report.reproduction_html` and :mod:`pipeline.report.page_html`, which use these
+helpers. Every function returns an HTML *fragment* (a ``str``) except :func:`page` (a whole
+document).
 """
 
 from __future__ import annotations
@@ -24,31 +18,21 @@ import html as _html
 import math
 import os
 import re
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Iterable
 from numbers import Integral, Real
 from pathlib import Path
 from typing import Any
 
-import pandas as pd
-
-from pipeline.atomic import write_bytes
-
 __all__ = [
     "DEFAULT_CSS",
     "css_class",
-    "definition_list",
     "escape",
-    "figure",
     "format_value",
-    "not_available",
     "page",
     "paragraph",
     "png_data_uri",
-    "section",
     "slugify",
-    "table",
     "toc",
-    "write_atomic",
 ]
 
 #: Inline stylesheet. Row classes ``v-<word>`` colour verdict/status words used by
@@ -131,109 +115,16 @@ def format_value(value: Any, sig: int = 9) -> str:
     return str(value)
 
 
-def _is_numeric(value: Any) -> bool:
-    return isinstance(value, Real) and not isinstance(value, bool)
-
-
 def paragraph(text: str, *, raw: bool = False, cls: str | None = None) -> str:
     """``<p>`` with escaped text (``raw=True`` if ``text`` is already HTML)."""
     attr = f' class="{escape(cls)}"' if cls else ""
     return f"<p{attr}>{text if raw else escape(text)}</p>\n"
 
 
-def not_available(what: str) -> str:
-    """A uniform 'X: not available' note."""
-    return paragraph(f"{what}: not available.", cls="na")
-
-
-def section(title: str, body: str, *, anchor: str | None = None, level: int = 2) -> str:
-    """``<section id=anchor>`` with a heading (``h{level}``) and an HTML body."""
-    anchor = anchor or slugify(title)
-    level = min(max(int(level), 1), 6)
-    return (
-        f'<section id="{escape(anchor)}">\n'
-        f'<h{level}><a href="#{escape(anchor)}">{escape(title)}</a></h{level}>\n'
-        f"{body}</section>\n"
-    )
-
-
 def toc(entries: Iterable[tuple[str, str]]) -> str:
     """Table of contents from ``(anchor, title)`` pairs (in-page links only)."""
     items = "".join(f'<li><a href="#{escape(a)}">{escape(t)}</a></li>\n' for a, t in entries)
     return f'<nav class="toc"><ul>\n{items}</ul></nav>\n'
-
-
-def definition_list(
-    mapping: Mapping[str, Any], *, value_format: Callable[[Any], str] | None = None
-) -> str:
-    """Key/value pairs as ``<dl class="kv">``; values are escaped (after ``value_format``)."""
-    fmt = value_format or format_value
-    rows = "".join(f"<dt>{escape(k)}</dt><dd>{escape(fmt(v))}</dd>\n" for k, v in mapping.items())
-    return f'<dl class="kv">\n{rows}</dl>\n'
-
-
-def table(
-    df: pd.DataFrame,
-    *,
-    class_column: str | None = None,
-    row_classes: Sequence[str] | None = None,
-    caption: str | None = None,
-    formatters: Mapping[str, Callable[[Any], str]] | None = None,
-    index: bool = False,
-    sig: int = 9,
-    table_id: str | None = None,
-    empty_text: str = "no rows",
-) -> str:
-    """Render a DataFrame as an HTML table (all text escaped).
-
-    ``class_column``: every row gets ``class="v-<value of that column>"`` (see
-    :data:`DEFAULT_CSS`), and that cell is wrapped in a matching ``<span>``.
-    ``row_classes``: explicit class per row (overrides ``class_column``).
-    ``formatters``: per-column ``value -> str``; other cells go through
-    :func:`format_value` with ``sig`` significant digits. Numeric cells are
-    right-aligned. ``index=True`` renders the (possibly multi-level) index as
-    leading columns.
-    """
-    if index:
-        df = df.reset_index()
-    if df.empty:
-        return paragraph(f"{caption + ': ' if caption else ''}{empty_text}.", cls="na")
-    if row_classes is not None and len(row_classes) != len(df):
-        raise ValueError(f"row_classes has {len(row_classes)} entries for {len(df)} rows")
-    if class_column is not None and class_column not in df.columns:
-        raise ValueError(f"class_column {class_column!r} not in columns {list(df.columns)}")
-    formatters = dict(formatters or {})
-    columns = [str(c) for c in df.columns]
-    idattr = f' id="{escape(table_id)}"' if table_id else ""
-    parts = [f'<table class="data"{idattr}>\n']
-    if caption:
-        parts.append(f"<caption>{escape(caption)}</caption>\n")
-    parts.append(
-        "<thead><tr>"
-        + "".join(f"<th>{escape(c)}</th>" for c in columns)
-        + "</tr></thead>\n<tbody>\n"
-    )
-    class_pos = list(df.columns).index(class_column) if class_column is not None else None
-    for i, row in enumerate(df.itertuples(index=False, name=None)):
-        if row_classes is not None:
-            cls = row_classes[i]
-        elif class_pos is not None:
-            cls = css_class(row[class_pos])
-        else:
-            cls = ""
-        cells = []
-        for j, (name, value) in enumerate(zip(df.columns, row, strict=True)):
-            fmt = formatters.get(name)
-            text = fmt(value) if fmt is not None else format_value(value, sig)
-            body = escape(text)
-            if class_pos is not None and j == class_pos and text:
-                body = f'<span class="{css_class(value)}">{body}</span>'
-            td = ' class="num"' if _is_numeric(value) else ""
-            cells.append(f"<td{td}>{body}</td>")
-        tr = f' class="{escape(cls)}"' if cls else ""
-        parts.append(f"<tr{tr}>" + "".join(cells) + "</tr>\n")
-    parts.append("</tbody>\n</table>\n")
-    return "".join(parts)
 
 
 def png_data_uri(source: str | os.PathLike[str] | bytes) -> str:
@@ -247,28 +138,6 @@ def png_data_uri(source: str | os.PathLike[str] | bytes) -> str:
     return "data:image/png;base64," + base64.b64encode(data).decode("ascii")
 
 
-def figure(
-    source: str | os.PathLike[str] | bytes | None,
-    *,
-    alt: str,
-    caption: str | None = None,
-    anchor: str | None = None,
-    missing_text: str | None = None,
-) -> str:
-    """``<figure>`` with an embedded PNG (data URI) and a caption.
-
-    If ``source`` is ``None`` or a path that does not exist, the figure holds a
-    'not available' note instead of an image, so a page still renders.
-    """
-    idattr = f' id="{escape(anchor)}"' if anchor else ""
-    cap = f"<figcaption>{escape(caption)}</figcaption>\n" if caption else ""
-    if source is None or (not isinstance(source, bytes) and not Path(source).is_file()):
-        note = missing_text or f"{alt}: not available"
-        return f'<figure{idattr}>\n<p class="na">{escape(note)}.</p>\n{cap}</figure>\n'
-    uri = png_data_uri(source)
-    return f'<figure{idattr}>\n<img src="{uri}" alt="{escape(alt)}">\n{cap}</figure>\n'
-
-
 def page(title: str, body: str, *, css: str = DEFAULT_CSS, lang: str = "en") -> str:
     """A complete, self-contained HTML5 document (inline CSS, no scripts)."""
     return (
@@ -278,14 +147,3 @@ def page(title: str, body: str, *, css: str = DEFAULT_CSS, lang: str = "en") -> 
         f"<title>{escape(title)}</title>\n<style>{css}</style>\n</head>\n"
         f"<body>\n{body}</body>\n</html>\n"
     )
-
-
-def write_atomic(
-    path: str | os.PathLike[str], data: str | bytes, *, encoding: str = "utf-8"
-) -> Path:
-    """Write ``data`` to ``path`` atomically (temp file, fsync, ``os.replace``; pipeline.atomic).
-
-    A reader never sees a half-written file, and a crash leaves the old file.
-    """
-    payload = data.encode(encoding) if isinstance(data, str) else bytes(data)
-    return write_bytes(path, payload)

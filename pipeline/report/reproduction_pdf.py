@@ -26,7 +26,9 @@ from pathlib import Path
 from typing import Any
 
 from pipeline.atomic import write_bytes
-from pipeline.report.document import (
+from pipeline.report.equations import equation_groups, equation_list
+from pipeline.report.model import (
+    Bullets,
     Document,
     EquationRow,
     EquationTable,
@@ -36,8 +38,6 @@ from pipeline.report.document import (
     ScoreRow,
     Section,
     Table,
-    equation_groups,
-    equation_list,
 )
 from pipeline.report.typst_math import typst_math, typst_math_breakable, typst_string
 
@@ -196,6 +196,7 @@ class _Renderer:
         self.root = root
         self.bad = bad
         self.snippets: list[str] = []
+        self.stems: dict[str, str] = {}  # the current equation table's symbol stems
         self.labels = {s.id: label_name(s.id) for s in _walk(doc.sections)}
 
     # ---- text -----------------------------------------------------------------------------
@@ -297,6 +298,8 @@ class _Renderer:
     def block(self, block: Any) -> str:
         if isinstance(block, Paragraph):
             return "\n\n".join(escape(p) for p in re.split(r"\n\s*\n", block.text) if p.strip())
+        if isinstance(block, Bullets):
+            return "\n\n".join(escape(f"• {item}") for item in block.items)
         if isinstance(block, Table):
             return self.table(block)
         if isinstance(block, Figure):
@@ -373,6 +376,7 @@ class _Renderer:
 
     # ---- equations ------------------------------------------------------------------------
     def equations(self, eqt: EquationTable) -> str:
+        self.stems = dict(eqt.stems)  # the paper's own symbol stems, for its forms
         out = []
         if eqt.caption:
             out.append(
@@ -430,7 +434,7 @@ class _Renderer:
         """Typeset one audited form from its srepr (raw text in a box if that fails)."""
         try:
             expr = _from_srepr(srepr)
-            full = typst_math(expr)
+            full = typst_math(expr, stems=self.stems)
             alt = self._alt(expr)
         except Exception:  # noqa: BLE001 - any printing failure falls back to the raw form
             return _raw(srepr)
@@ -448,7 +452,7 @@ class _Renderer:
         if isinstance(expr, (tuple, list, sp.Tuple)):
             parts = []
             for i, part in enumerate(expr):
-                full = typst_math(part)
+                full = typst_math(part, stems=self.stems)
                 parts.append(f"#fitmath($ {full} $, [{self._alt(part)}])")
                 self.snippets.append(full)
                 if i < len(expr) - 1:
@@ -460,11 +464,11 @@ class _Renderer:
             for i in range(r):
                 for j in range(c):
                     idx = f"{i + 1}" if c == 1 else f"{i + 1}, {j + 1}"
-                    text = typst_math_breakable(expr[i, j])
+                    text = typst_math_breakable(expr[i, j], stems=self.stems)
                     cells.append(f"text(size: 8.5pt, fill: neutral)[({idx})], [${text}$]")
             shape = f"{r} × {c} matrix, entry by entry:"
             return f"#entries({typst_string(shape)}, " + ", ".join(cells) + ")"
-        return f"${typst_math_breakable(expr)}$"
+        return f"${typst_math_breakable(expr, stems=self.stems)}$"
 
     # ---- whole document -------------------------------------------------------------------
     def render(self) -> str:
@@ -681,7 +685,7 @@ def write_pdf(
     """Compile the report and write it atomically to ``path``. ``root`` (default: the
     repository root of :mod:`pipeline.report.document`) is the compile root: it must
     contain every figure."""
-    from pipeline.report.document import ROOT
+    from pipeline.report.document import ROOT  # the repository root
 
     t0 = time.perf_counter()
     build = compile_pdf(doc, ROOT if root is None else root)

@@ -12,7 +12,8 @@ Symbol names follow the conventions of the ``derivations`` packages:
 * trailing digits of a stem are a subscript (``C11`` -> C_11, ``Gc1_12`` -> G c_(1, 12));
 * ``_dot`` / ``_ddot`` parts and ``hat`` / ``dot`` / ``ddot`` / ``bar`` / ``tilde`` stem
   suffixes are accents (``psi_dot`` -> ψ̇, ``phi_i_ddot`` -> φ̈_i, ``xhat_1`` -> x̂_1);
-* the altimeter paper's sensor outputs ``omegat`` and ``ft`` are ω̃ and f̃ (STEMS);
+* a paper's own stems with a fixed rendering are passed as ``stems`` (its
+  ``Paper.math_stems``): ``typst_math(x, stems={"xt": "tilde(x)"})``;
 * other multi-letter stems: up to two letters are italic letters side by side (``ax`` ->
   ax, as a product would be typeset), longer ones upright text (``"xpred"``); subscript words
   likewise (``n_wx`` -> n_(w x), ``f_norm`` -> f_"norm");
@@ -27,6 +28,7 @@ so the output is always valid Typst.
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from typing import Any
 
 import sympy as sp
@@ -50,9 +52,6 @@ GREEK = (
 GREEK_NAMES = {g: g for g in GREEK} | {g.capitalize(): g.capitalize() for g in GREEK}
 GREEK_NAMES |= {"varepsilon": "epsilon.alt", "varphi": "phi.alt", "vartheta": "theta.alt"}
 OTHER_NAMES = {"ell": "ell", "nabla": "nabla", "hbar": "planck.reduce", "infty": "infinity"}
-
-#: Whole stems with a fixed rendering (altimeter_attitude: gyro and accelerometer outputs).
-STEMS = {"omegat": "tilde(omega)", "ft": "tilde(f)"}
 
 #: Stem suffixes and subscript parts that are accents.
 ACCENTS = {
@@ -137,33 +136,38 @@ def _word(word: str, *, short: int) -> str:
     return " ".join(out)
 
 
-def _stem(stem: str) -> tuple[str, list[str]]:
+def _stem(stem: str, stems: Mapping[str, str]) -> tuple[str, list[str]]:
     """(Typst source of a stem, extra subscript parts taken from its trailing digits)."""
-    if stem in STEMS:
-        return STEMS[stem], []
+    if stem in stems:
+        return stems[stem], []
     m = re.fullmatch(r"([A-Za-z]+?)([0-9]+)", stem)
     if m and not stem.isdigit():
-        body, subs = _stem(m.group(1))
+        body, subs = _stem(m.group(1), stems)
         return body, [*subs, m.group(2)]
     for prefix in ("Delta", "delta"):
         if stem.startswith(prefix) and len(stem) > len(prefix):
-            inner, subs = _stem(stem[len(prefix) :])
+            inner, subs = _stem(stem[len(prefix) :], stems)
             return f"{prefix} {inner}", subs
     for suffix, accent in ACCENTS.items():
         if stem.endswith(suffix) and len(stem) > len(suffix) and stem[: -len(suffix)].isalpha():
-            inner, subs = _stem(stem[: -len(suffix)])
+            inner, subs = _stem(stem[: -len(suffix)], stems)
             return f"{accent}({inner})", subs
     if re.fullmatch(r"[A-Za-z]+", stem):
         return _letters(stem, short=2), []
     return (_word(stem, short=2) if stem else typst_string(stem)), []
 
 
-def symbol_name(name: str) -> str:
-    """Typst math source of a SymPy symbol name (see the module docstring)."""
+def symbol_name(name: str, stems: Mapping[str, str] | None = None) -> str:
+    """Typst math source of a SymPy symbol name (see the module docstring); ``stems``: whole
+    stems with a fixed rendering.
+
+    >>> symbol_name("xt_1", {"xt": "tilde(x)"}), symbol_name("xt_1")
+    ('tilde(x)_1', 'x t_1')
+    """
     primes = len(name) - len(name.rstrip("'"))
     name = name.rstrip("'")
     stem, *parts = name.split("_")
-    base, subs = _stem(stem)
+    base, subs = _stem(stem, stems or {})
     accents = []
     for part in parts:
         if part in ("dot", "ddot"):
@@ -186,7 +190,7 @@ class TypstMathPrinter(Printer):
     """Typst math-mode printer; ``doprint(expr)`` returns the source without ``$``."""
 
     printmethod = "_typst"
-    _default_settings: dict[str, Any] = {"order": None, "float_digits": 6}
+    _default_settings: dict[str, Any] = {"order": None, "float_digits": 6, "stems": {}}
 
     # ---- helpers ------------------------------------------------------------------------
     def parenthesize(self, item: Any, level: int, strict: bool = False) -> str:
@@ -216,12 +220,12 @@ class TypstMathPrinter(Printer):
 
     # ---- atoms --------------------------------------------------------------------------
     def _print_Symbol(self, expr: sp.Symbol) -> str:
-        return symbol_name(expr.name)
+        return symbol_name(expr.name, self._settings["stems"])
 
     _print_Dummy = _print_Symbol
 
     def _print_MatrixSymbol(self, expr: Any) -> str:
-        return symbol_name(expr.name)
+        return symbol_name(expr.name, self._settings["stems"])
 
     def _print_Integer(self, expr: sp.Integer) -> str:
         return str(expr.p)

@@ -42,6 +42,15 @@ def code(*modules, script=None):
     return module_closure(names) + ([f"{SCRIPTS}/{script}"] if script else [])
 
 
+def step_modules(paper, step):
+    """The modules a step runs: its entry's, the paper's plug-in (loaded by name through the
+    registry) and, for a page step, the paper's report sections (``Paper.report``)."""
+    modules = [step.module, f"pipeline.{paper.slug}.paper"]
+    if step.entry.endswith(":page_step") and paper.report:
+        modules.append(paper.report.split(":")[0])
+    return modules
+
+
 def tagged(path, paper, subcategory, caption, **labels):
     """``path`` marked for the Snakemake report: category = the paper's slug, one caption per
     kind of output (``reports/snakemake/<caption>.rst``), ``labels`` shown beside it."""
@@ -112,6 +121,11 @@ def reproduction_inputs():
     """Every file the combined report reads, per paper."""
     named = {k: [] for k in ("audits", "math", "verdicts", "published", "scenarios")}
     named.update({k: [] for k in ("provenance", "figures", "svg", "pages", "notebooks")})
+    # each paper's report sections (Paper.report), loaded by name: its import graph
+    named["page_inputs"] = []
+    named["paper_code"] = module_closure(
+        [p.report.split(":")[0] for p in PAPERS.values() if p.report]
+    )
     for slug, paper in PAPERS.items():
         ctx = CONTEXTS[slug]
         named["audits"].append(f"{ctx.results}/equation_audit.csv")
@@ -124,4 +138,9 @@ def reproduction_inputs():
         named["svg"] += [ctx.figure(f.svg) for f in paper.figures]
         named["pages"].append(ctx.page)
         named["notebooks"].append(ctx.notebook_html)
+        # the paper's sections read what its page step reads
+        for step in paper.steps:
+            if step.entry.endswith(":page_step"):
+                for value in step.inputs(ctx).values():
+                    named["page_inputs"] += value if isinstance(value, list) else [value]
     return named

@@ -10,7 +10,7 @@ for _paper in PAPERS.values():
                 f"{_paper.slug}_{_step.name}"
             input:
                 **_step.inputs(_ctx),
-                code=code(_step.module, script="run_step.py"),
+                code=code(*step_modules(_paper, _step), script="run_step.py"),
             output:
                 **step_outputs(_paper, _step),
             log:

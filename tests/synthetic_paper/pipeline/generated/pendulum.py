@@ -18,24 +18,23 @@ def _broadcast(*outs):
         for a in arrays
     )
 
-
-__all__ = ["angular_acceleration", "period_small_angle", "period_first_order"]
+__all__ = ['angular_acceleration', 'period_small_angle', 'period_first_order']
 
 
 def angular_acceleration(theta, l, g):
     """eq. 1: theta'' (rad/s^2)."""
-    out0 = -g * np.sin(theta) / l
+    out0 = -g*np.sin(theta)/l
     return out0
 
 
 def period_small_angle(l, g):
     """eq. 3: T (s)."""
-    out0 = 2 * np.pi * np.sqrt(l) / np.sqrt(g)
+    out0 = 2*np.pi*np.sqrt(l)/np.sqrt(g)
     return out0
 
 
 def period_first_order(l, g, theta0):
     """eq. 4 (derived form): T to second order in the amplitude (s)."""
-    _x0 = np.pi * np.sqrt(l) / np.sqrt(g)
-    out0 = (1 / 8) * _x0 * theta0**2 + 2 * _x0
+    _x0 = np.pi*np.sqrt(l)/np.sqrt(g)
+    out0 = (1/8)*_x0*theta0**2 + 2*_x0
     return out0

@@ -55,6 +55,21 @@ STEPS = (
             "svg": ctx.figure(FIGURES[0].svg),
         },
     ),
+    Step(
+        "report",
+        "pipeline.report.page_html:page_step",
+        inputs=lambda ctx: {
+            **ctx.published_inputs,
+            "audit": f"{ctx.results}/equation_audit.csv",
+            "verdicts": f"{ctx.results}/verdicts.csv",
+            "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
+            "scenario_schema": SCENARIO_SCHEMA,
+            "figures": [ctx.figure(f.file) for f in FIGURES],
+        },
+        outputs=lambda ctx: {"page": ctx.page},
+        params=lambda ctx: {"paper": ctx.slug, "settings": dict(ctx.settings)},
+        report={"page": ("Pages", "page")},
+    ),
 )
 
 PAPER = Paper(
@@ -64,4 +79,5 @@ PAPER = Paper(
     load_scenario=load_scenario,
     figures=FIGURES,
     steps=STEPS,
+    report="pipeline.pendulum.report:report",
 )

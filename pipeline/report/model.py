@@ -1,0 +1,307 @@
+"""The document model shared by every report: the per-paper pages (``reports/<slug>.html``)
+and the combined report (``reports/reproduction.html`` and ``.pdf``) are rendered from it.
+
+The model is plain data: text fields are plain text (no HTML), except the ``*_mathml``
+fields of :class:`EquationRow`, which hold complete ``<math>`` elements (or ``None``). A
+paper contributes its sections through its :class:`~pipeline.paper.Paper` plug-in: a
+function of :class:`ReportInputs` that returns a :class:`PaperReport`.
+
+>>> t = frame_table(pd.DataFrame({"id": ["a"], "x": [0.1 + 0.2], "verdict": ["differs"]}),
+...                 status="verdict")
+>>> t.rows, t.highlight, t.row_status
+([['a', '0.3', 'differs']], [0], ['differs'])
+>>> frame_table(pd.DataFrame({"x": []}), caption="sweep.csv")
+Paragraph(text='sweep.csv: no rows.')
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+from pipeline.report.html import format_value
+
+__all__ = [
+    "FAILURE_WORDS",
+    "VERDICT_EXTRA_COLUMNS",
+    "Block",
+    "Bullets",
+    "Document",
+    "EquationRow",
+    "EquationTable",
+    "Figure",
+    "Link",
+    "PaperReport",
+    "Paragraph",
+    "ReportInputs",
+    "ScoreRow",
+    "Section",
+    "Table",
+    "frame_table",
+    "not_available",
+    "walk",
+]
+
+#: Verdict/status words that mark a table row as a failure (``Table.highlight``).
+FAILURE_WORDS = ("not_reproduced", "not_upheld", "differs", "missing")
+#: verdicts.csv columns after the contract's (pipeline.columns.VERDICT_COLUMNS) that the
+#: reports show where a file has them, selected by name
+VERDICT_EXTRA_COLUMNS = ("tolerance", "reason")
+
+
+@dataclass(frozen=True)
+class Paragraph:
+    """One paragraph of plain text."""
+
+    text: str
+
+
+@dataclass(frozen=True)
+class Bullets:
+    """A bulleted list of plain-text items."""
+
+    items: list[str]
+
+
+@dataclass(frozen=True)
+class Table:
+    """A table of plain-text cells. ``highlight`` lists the row indices to emphasise (rows
+    whose verdict or status is a failure); ``row_status`` (empty, or one word per row) is the
+    verdict or status word of each row, which a page colours its row by."""
+
+    columns: list[str]
+    rows: list[list[str]]
+    caption: str = ""
+    highlight: list[int] = field(default_factory=list)
+    row_status: list[str] = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class Figure:
+    """A PNG figure (its SVG twin beside it). ``label`` is the paper's numbering (``"Fig. 7"``;
+    ``"Extra fig. 1"`` for a figure the paper does not have, ``in_paper`` False); ``caption``
+    does not repeat the label, so renderers show ``label`` then ``caption``."""
+
+    path: str
+    caption: str
+    label: str
+    in_paper: bool = True
+
+
+@dataclass(frozen=True)
+class EquationRow:
+    """One row of an equation audit, with the printed/derived/residual forms as
+    MathML (complete ``<math>`` elements) and SymPy ``srepr`` strings (None where absent)."""
+
+    paper: str
+    equation: str
+    status: str
+    note: str
+    residual_text: str
+    printed_mathml: str | None
+    derived_mathml: str | None
+    residual_mathml: str | None
+    printed_srepr: str | None
+    derived_srepr: str | None
+    residual_srepr: str | None
+
+
+@dataclass(frozen=True)
+class EquationTable:
+    """A paper's audited equations; ``stems`` maps symbol stems to their Typst rendering
+    (the paper's :attr:`~pipeline.paper.Paper.math_stems`)."""
+
+    rows: list[EquationRow]
+    caption: str = ""
+    stems: Mapping[str, str] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class Link:
+    """A link; ``target`` is an href relative to the report (e.g. ``notebooks/x.html``)."""
+
+    text: str
+    target: str
+
+
+Block = Paragraph | Bullets | Table | Figure | EquationTable | Link
+
+
+@dataclass(frozen=True)
+class Section:
+    id: str
+    title: str
+    blocks: list[Block]
+    subsections: list[Section] = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class ScoreRow:
+    """One paper's line of the scoreboard; every count is computed from the CSVs.
+
+    ``audit``: match / differs / not_checkable; ``numbers``: reproduced /
+    consistent / not_reproduced; ``claims``: upheld / not_upheld / not_checkable;
+    ``line``: the ReScience-style one-line verdict; ``anchor``: the section id.
+    """
+
+    slug: str
+    title: str
+    audit: dict[str, int]
+    numbers: dict[str, int]
+    claims: dict[str, int]
+    line: str
+    anchor: str
+
+
+@dataclass(frozen=True)
+class Document:
+    title: str
+    subtitle: str
+    generated_from: str
+    scoreboard: list[ScoreRow]
+    sections: list[Section]
+
+
+@dataclass(frozen=True)
+class ReportInputs:
+    """What a paper's report sections read: ``results`` (``results/<slug>``), ``scenarios``
+    (``config/scenarios/<slug>``), ``published`` (``config/published/<slug>.yaml``),
+    ``figures`` (``results/<slug>/figures``) and the paper's settings in the config
+    (``config[<slug>]``)."""
+
+    results: Path
+    scenarios: Path
+    published: Path
+    figures: Path
+    settings: Mapping[str, Any] = field(default_factory=dict)
+    #: paths shown on a page are relative to this folder (the repository root) where they
+    #: are inside it, so the page does not depend on where the repository is
+    display_root: Path | None = None
+
+    @classmethod
+    def from_context(cls, ctx: Any) -> ReportInputs:
+        """The inputs of a :class:`~pipeline.paper.Context` (the registry's view of a paper
+        under the current config).
+
+        >>> from pipeline.paper import Context
+        >>> ctx = Context("x", "results", "reports", ("paper",), {"published_scenario": "paper"})
+        >>> i = ReportInputs.from_context(ctx)
+        >>> i.results.as_posix(), i.figures.as_posix(), i.published.as_posix(), dict(i.settings)
+        ('results/x', 'results/x/figures', 'config/published/x.yaml', {'published_scenario': 'paper'})
+        """
+        return cls(
+            results=Path(ctx.results),
+            scenarios=Path(ctx.scenarios_dir),
+            published=Path(ctx.published),
+            figures=Path(ctx.figure("-")).parent,
+            settings=dict(ctx.settings),
+        )
+
+    def shown(self, path: Path) -> str:
+        """``path`` as a page shows it.
+
+        >>> ReportInputs.under("x", "/r/results", "/r/config", display_root=Path("/r")).shown(
+        ...     Path("/r/results/x/figures"))
+        'results/x/figures'
+        """
+        if self.display_root is not None:
+            try:
+                return path.relative_to(self.display_root).as_posix()
+            except ValueError:
+                pass
+        return path.as_posix()
+
+    @classmethod
+    def under(
+        cls,
+        slug: str,
+        results_dir: str | Path,
+        config_dir: str | Path = "config",
+        settings: Mapping[str, Any] | None = None,
+        display_root: Path | None = None,
+    ) -> ReportInputs:
+        """The inputs at their conventional places under ``results_dir`` and ``config_dir``."""
+        results = Path(results_dir) / slug
+        return cls(
+            results=results,
+            scenarios=Path(config_dir) / "scenarios" / slug,
+            published=Path(config_dir) / "published" / f"{slug}.yaml",
+            figures=results / "figures",
+            settings=dict(settings or {}),
+            display_root=display_root,
+        )
+
+
+#: The parts of a paper's section in the combined report, fed from page sections.
+PARTS = ("summary", "published", "figures", "findings", "assumptions")
+
+
+@dataclass(frozen=True)
+class PaperReport:
+    """What one paper contributes: its page ``sections`` (in page order, ids unprefixed) and,
+    per part of its section in the combined report (:data:`PARTS`), the ids of the page
+    sections that feed it. ``published`` None: the combined report groups the published
+    numbers itself from verdicts.csv by the paper's table and figure numbering."""
+
+    sections: list[Section]
+    parts: Mapping[str, Sequence[str] | None]
+
+    def section(self, sid: str) -> Section | None:
+        return next((s for s in self.sections if s.id == sid), None)
+
+
+#: ``report(inputs)``: a paper's report function (``Paper.report`` names it).
+ReportFunction = Callable[[ReportInputs], PaperReport]
+
+
+def not_available(what: str) -> Paragraph:
+    """A uniform 'X: not available.' note."""
+    return Paragraph(f"{what}: not available.")
+
+
+def frame_table(
+    df: pd.DataFrame,
+    *,
+    status: str | None = None,
+    caption: str = "",
+    formatters: Mapping[str, Callable[[Any], str]] | None = None,
+    sig: int = 9,
+    empty_text: str = "no rows",
+) -> Table | Paragraph:
+    """A DataFrame as a :class:`Table` of text cells (``formatters`` per column, else
+    :func:`~pipeline.report.html.format_value` with ``sig`` digits). ``status`` names the
+    column holding each row's verdict or status word (``row_status``, ``highlight``). An
+    empty frame is a paragraph saying so."""
+    if df.empty:
+        return Paragraph(f"{caption + ': ' if caption else ''}{empty_text}.")
+    if status is not None and status not in df.columns:
+        raise ValueError(f"status column {status!r} not in columns {list(df.columns)}")
+    fmts = dict(formatters or {})
+    rows = [
+        [
+            fmts[c](v) if c in fmts else format_value(v, sig)
+            for c, v in zip(df.columns, row, strict=True)
+        ]
+        for row in df.itertuples(index=False, name=None)
+    ]
+    words = [str(w) for w in df[status]] if status is not None else []
+    return Table(
+        columns=[str(c) for c in df.columns],
+        rows=rows,
+        caption=caption,
+        highlight=[i for i, w in enumerate(words) if w in FAILURE_WORDS],
+        row_status=words,
+    )
+
+
+def walk(sections: Sequence[Section]) -> list[Section]:
+    """Every section, depth first, in document order."""
+    out: list[Section] = []
+    for s in sections:
+        out.append(s)
+        out += walk(s.subsections)
+    return out

@@ -1,0 +1,85 @@
+"""A paper's page ``reports/<slug>.html``, rendered from the sections its report contributes
+(the same :mod:`pipeline.report.model` objects its section of the combined report is built
+from) with the combined report's block renderer (:mod:`pipeline.report.blocks_html`).
+
+One self-contained file: inline CSS, figures as ``data:`` URIs, no script, nothing fetched;
+the same inputs give the same bytes.
+
+``python -m pipeline.report.page_html --paper <slug> --out reports/<slug>.html`` (the inputs
+at their conventional places under ``--results-dir`` and ``--config-dir``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+from collections.abc import Callable, Mapping, Sequence
+from pathlib import Path
+
+from pipeline.atomic import write_text
+from pipeline.paper import Paper
+from pipeline.report import html as H
+from pipeline.report.blocks_html import render_section
+from pipeline.report.model import PaperReport, ReportInputs
+
+__all__ = ["build_page", "main", "page_step", "render_page"]
+
+
+def render_page(paper: Paper, report: PaperReport) -> str:
+    """The page as an HTML string: title, reference, contents, then the sections."""
+    title = f"Reproduction report: {paper.title}"
+    body = (
+        f"<header><h1>{H.escape(title)}</h1>\n"
+        f"<p>{H.escape(paper.citation)} — slug <code>{H.escape(paper.slug)}</code></p>\n"
+        "</header>\n"
+    )
+    body += H.toc([(s.id, s.title) for s in report.sections])
+    body += "".join(render_section(s, {}, 2, status_rows=True) for s in report.sections)
+    return H.page(title, body)
+
+
+def build_page(paper: Paper, inputs: ReportInputs, out: str | os.PathLike[str]) -> Path:
+    """Build ``paper``'s report sections from ``inputs`` and write its page to ``out``
+    atomically (nothing is written if an input is missing or malformed)."""
+    return write_text(out, render_page(paper, paper.report_function()(inputs)))
+
+
+def page_step(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
+    """The page step of every paper (``Step(..., "pipeline.report.page_html:page_step")``):
+    ``params["paper"]`` the slug, ``params["settings"]`` its settings; the folders come from
+    the named inputs ``audit`` (results), ``scenario_files``, ``published`` and ``figures``."""
+    from pipeline.registry import load_paper
+
+    inputs_ = ReportInputs(
+        results=Path(inputs["audit"]).parent,
+        scenarios=Path(inputs["scenario_files"][0]).parent,
+        published=Path(inputs["published"]),
+        figures=Path(inputs["figures"][0]).parent,
+        settings=dict(params.get("settings") or {}),
+    )
+    out = build_page(load_paper(params["paper"]), inputs_, outputs["page"])
+    log(f"wrote {out}")
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    from pipeline.registry import load_paper
+
+    ap = argparse.ArgumentParser(
+        prog="python -m pipeline.report.page_html", description=__doc__.split("\n\n")[0]
+    )
+    ap.add_argument("--paper", required=True, help="the paper's slug")
+    ap.add_argument("--results-dir", default="results")
+    ap.add_argument("--config-dir", default="config")
+    ap.add_argument("--out", required=True)
+    a = ap.parse_args(argv)
+    import yaml
+
+    cfg_path = Path(a.config_dir) / "config.yaml"
+    cfg = yaml.safe_load(cfg_path.read_text(encoding="utf-8")) if cfg_path.is_file() else {}
+    inputs = ReportInputs.under(a.paper, a.results_dir, a.config_dir, (cfg or {}).get(a.paper))
+    print(build_page(load_paper(a.paper), inputs, a.out))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
