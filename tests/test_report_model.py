@@ -200,8 +200,8 @@ def test_published_tables_show_tolerance_and_reason_where_recorded(tmp_path):
 
     published = tmp_path / "p.yaml"
     published.write_text(
-        "items:\n  - {id: T1, table: Table 2 (x)}\n  - {id: F1, figure: Fig. 10}\n"
-        "  - {id: T3, table: Table 10}\n",
+        "items:\n  - {id: T1, label: Table 2 (x)}\n  - {id: F1, label: Fig. 10}\n"
+        "  - {id: T3, label: Table 10}\n",
         encoding="utf-8",
     )
     base = {"quantity": "q", "method": "m", "published": "1", "reproduced": "1", "note": ""}
