@@ -112,6 +112,15 @@ class Context:
         any step that reads the published values."""
         return {"published": self.published, "published_schema": PUBLISHED_SCHEMA}
 
+    def run_inputs(self, scenario: str, schema: str) -> dict[str, str]:
+        """The inputs of a step that runs a scenario: the scenario file (a path, or the
+        ``{scenario}`` pattern), its schema, and the check that the generated code is fresh."""
+        return {
+            "scenario": scenario,
+            "schema": schema,
+            "codegen": f"{self.results}/codegen_check.txt",
+        }
+
     def scenario_file(self, name: str) -> str:
         return f"{self.scenarios_dir}/{name}.yaml"
 
@@ -153,6 +162,28 @@ class Step:
     @property
     def module(self) -> str:
         return self.entry.split(":", 1)[0]
+
+
+#: the page step every paper uses: reports/<slug>.html from the paper's report sections
+PAGE_ENTRY = "pipeline.report.page_html:page_step"
+
+
+def page_step(inputs: Callable[[Context], Paths]) -> Step:
+    """A paper's page step (``<slug>_report``): its audit, verdicts and published file, and
+    ``inputs(ctx)``, everything else its report sections read."""
+    return Step(
+        "report",
+        PAGE_ENTRY,
+        inputs=lambda ctx: {
+            **ctx.published_inputs,
+            "audit": f"{ctx.results}/equation_audit.csv",
+            "verdicts": f"{ctx.results}/verdicts.csv",
+            **inputs(ctx),
+        },
+        outputs=lambda ctx: {"page": ctx.page},
+        params=lambda ctx: {"paper": ctx.slug, "settings": dict(ctx.settings)},
+        report={"page": ("Pages", "page")},
+    )
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,7 @@ from __future__ import annotations
 from pipeline.altimeter_attitude.columns import ALTIMETER_FILTERS
 from pipeline.altimeter_attitude.scenario import load_scenario
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
-from pipeline.paper import Context, FigureSpec, Paper, Step
+from pipeline.paper import Context, FigureSpec, Paper, Step, page_step
 
 __all__ = ["PAPER", "TITLE", "CITATION", "MATH_STEMS"]
 
@@ -88,9 +88,7 @@ STEPS = (
         "pipeline.altimeter_attitude.steps:simulate",
         per_scenario=True,
         inputs=lambda ctx: {
-            "scenario": ctx.scenario_file("{scenario}"),
-            "schema": SCENARIO_SCHEMA,
-            "codegen": f"{ctx.results}/codegen_check.txt",
+            **ctx.run_inputs(ctx.scenario_file("{scenario}"), SCENARIO_SCHEMA),
         },
         outputs=lambda ctx: {
             **{n: f"{ctx.results}/{{scenario}}/{n}.csv" for n in RESULT_CSVS},
@@ -102,9 +100,7 @@ STEPS = (
         "sweep",
         "pipeline.altimeter_attitude.steps:sweep",
         inputs=lambda ctx: {
-            "scenario": ctx.settings["sweep"]["base_scenario"],
-            "schema": SCENARIO_SCHEMA,
-            "codegen": f"{ctx.results}/codegen_check.txt",
+            **ctx.run_inputs(ctx.settings["sweep"]["base_scenario"], SCENARIO_SCHEMA),
         },
         outputs=lambda ctx: {"sweep": f"{ctx.results}/sweep.csv"},
         params=lambda ctx: {"sweep": dict(ctx.settings["sweep"])},
@@ -143,13 +139,8 @@ STEPS = (
             "svg": ctx.figure(FigureSpec(SWEEP_FIGURE, None, "").svg),
         },
     ),
-    Step(
-        "report",
-        "pipeline.report.page_html:page_step",
-        inputs=lambda ctx: {
-            **ctx.published_inputs,
-            "audit": f"{ctx.results}/equation_audit.csv",
-            "verdicts": f"{ctx.results}/verdicts.csv",
+    page_step(
+        lambda ctx: {
             "summaries": ctx.per_scenario("rms_summary.csv"),
             "noise_free": ctx.per_scenario("noise_free.csv"),
             "provenance": ctx.per_scenario("provenance.json"),
@@ -157,10 +148,7 @@ STEPS = (
             "scenario_schema": SCENARIO_SCHEMA,
             "sweep": f"{ctx.results}/sweep.csv",
             "figures": [ctx.figure(f) for f in [*FIGURES, SWEEP_FIGURE]],
-        },
-        outputs=lambda ctx: {"page": ctx.page},
-        params=lambda ctx: {"paper": ctx.slug, "settings": dict(ctx.settings)},
-        report={"page": ("Pages", "page")},
+        }
     ),
 )
 

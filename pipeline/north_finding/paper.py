@@ -11,7 +11,7 @@ from collections.abc import Callable
 from typing import Any
 
 from pipeline.north_finding.scenario import load_scenario, scenario_data_files
-from pipeline.paper import Context, FigureSpec, Paper, Step
+from pipeline.paper import Context, FigureSpec, Paper, Step, page_step
 
 __all__ = ["PAPER", "TITLE", "CITATION", "FIGURE_CAPTIONS"]
 
@@ -96,9 +96,7 @@ STEPS = (
         "pipeline.north_finding.steps:simulate",
         per_scenario=True,
         inputs=lambda ctx: {
-            "scenario": ctx.scenario_file("{scenario}"),
-            "schema": SCENARIO_SCHEMA,
-            "codegen": f"{ctx.results}/codegen_check.txt",
+            **ctx.run_inputs(ctx.scenario_file("{scenario}"), SCENARIO_SCHEMA),
             "data": _data_files(ctx),
         },
         outputs=lambda ctx: {
@@ -127,21 +125,13 @@ STEPS = (
         },
         outputs=_figures,
     ),
-    Step(
-        "report",
-        "pipeline.report.page_html:page_step",
-        inputs=lambda ctx: {
-            "audit": f"{ctx.results}/equation_audit.csv",
-            "verdicts": f"{ctx.results}/verdicts.csv",
-            **ctx.published_inputs,
+    page_step(
+        lambda ctx: {
             "scenarios": [f for name in SCENARIO_FILES for f in ctx.per_scenario(name)],
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
             "scenario_schema": SCENARIO_SCHEMA,
             "figures": _figures(ctx)["png"],
-        },
-        outputs=lambda ctx: {"page": ctx.page},
-        params=lambda ctx: {"paper": ctx.slug, "settings": dict(ctx.settings)},
-        report={"page": ("Pages", "page")},
+        }
     ),
 )
 

@@ -7,7 +7,7 @@ position-independent algorithm under gyro drift (eqs. 28-36, Table 2; Figs. 5-8)
 
 from __future__ import annotations
 
-from pipeline.paper import Context, FigureSpec, Paper, Step
+from pipeline.paper import Context, FigureSpec, Paper, Step, page_step
 from pipeline.platform_drift.scenario import load_scenario
 
 __all__ = ["PAPER", "TITLE", "CITATION"]
@@ -58,9 +58,7 @@ STEPS = (
         "pipeline.platform_drift.steps:simulate",
         per_scenario=True,
         inputs=lambda ctx: {
-            "scenario": ctx.scenario_file("{scenario}"),
-            "schema": SCENARIO_SCHEMA,
-            "codegen": f"{ctx.results}/codegen_check.txt",
+            **ctx.run_inputs(ctx.scenario_file("{scenario}"), SCENARIO_SCHEMA),
         },
         outputs=lambda ctx: {
             **{n: f"{ctx.results}/{{scenario}}/{n}.csv" for n in SCENARIO_CSVS},
@@ -99,9 +97,7 @@ STEPS = (
         "latitude_sweep",
         "pipeline.platform_drift.steps:latitude_sweep",
         inputs=lambda ctx: {
-            "scenario": ctx.scenario_file(SWEEP_SCENARIO),
-            "schema": SCENARIO_SCHEMA,
-            "codegen": f"{ctx.results}/codegen_check.txt",
+            **ctx.run_inputs(ctx.scenario_file(SWEEP_SCENARIO), SCENARIO_SCHEMA),
         },
         outputs=lambda ctx: {
             "csv": f"{ctx.results}/latitude_sweep.csv",
@@ -109,22 +105,14 @@ STEPS = (
             "svg": ctx.figure("fig9_latitude.svg"),
         },
     ),
-    Step(
-        "report",
-        "pipeline.report.page_html:page_step",
-        inputs=lambda ctx: {
-            **ctx.published_inputs,
-            "audit": f"{ctx.results}/equation_audit.csv",
-            "verdicts": f"{ctx.results}/verdicts.csv",
+    page_step(
+        lambda ctx: {
             "summaries": ctx.per_scenario("summary.csv"),
             "provenance": ctx.per_scenario("provenance.json"),
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
             "scenario_schema": SCENARIO_SCHEMA,
             "figures": [ctx.figure(f.file) for f in FIGURES],
-        },
-        outputs=lambda ctx: {"page": ctx.page},
-        params=lambda ctx: {"paper": ctx.slug, "settings": dict(ctx.settings)},
-        report={"page": ("Pages", "page")},
+        }
     ),
 )
 

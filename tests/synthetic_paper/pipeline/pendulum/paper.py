@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from pipeline.pendulum.scenario import load_scenario
 
-from pipeline.paper import Context, FigureSpec, Paper, Step
+from pipeline.paper import Context, FigureSpec, Paper, Step, page_step
 
 __all__ = ["PAPER"]
 
@@ -30,9 +30,7 @@ STEPS = (
         "pipeline.pendulum.steps:simulate",
         per_scenario=True,
         inputs=lambda ctx: {
-            "scenario": ctx.scenario_file("{scenario}"),
-            "schema": SCENARIO_SCHEMA,
-            "codegen": f"{ctx.results}/codegen_check.txt",
+            **ctx.run_inputs(ctx.scenario_file("{scenario}"), SCENARIO_SCHEMA),
         },
         outputs=lambda ctx: {
             "periods": f"{ctx.results}/{{scenario}}/periods.csv",
@@ -55,20 +53,12 @@ STEPS = (
             "svg": ctx.figure(FIGURES[0].svg),
         },
     ),
-    Step(
-        "report",
-        "pipeline.report.page_html:page_step",
-        inputs=lambda ctx: {
-            **ctx.published_inputs,
-            "audit": f"{ctx.results}/equation_audit.csv",
-            "verdicts": f"{ctx.results}/verdicts.csv",
+    page_step(
+        lambda ctx: {
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
             "scenario_schema": SCENARIO_SCHEMA,
             "figures": [ctx.figure(f.file) for f in FIGURES],
-        },
-        outputs=lambda ctx: {"page": ctx.page},
-        params=lambda ctx: {"paper": ctx.slug, "settings": dict(ctx.settings)},
-        report={"page": ("Pages", "page")},
+        }
     ),
 )
 
