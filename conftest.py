@@ -9,7 +9,7 @@ are not collected:
   so a plain import fails with a NameError; they have no doctests. The step logic they call
   lives in importable modules, whose doctests do run.
 
-Notebooks (``notebooks/*.ipynb``) are not Python modules for pytest; tests/test_notebook_*.py
+Notebooks (``notebooks/*.ipynb``) are not Python modules for pytest; tests/<slug>/test_notebook_<slug>.py
 execute them.
 """
 

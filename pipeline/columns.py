@@ -15,7 +15,15 @@ AUDIT_STATUSES = ("match", "differs", "not_checkable")
 # results/<slug>/verdicts.csv
 VERDICT_COLUMNS = ["id", "kind", "quantity", "method", "published", "reproduced", "verdict", "note"]
 # written after the contract columns: the tolerance a verdict applied and the reason it follows
-VERDICT_EXTRA_COLUMNS = ["tolerance", "reason"]
+# and, for a row that is not reproduced or not upheld, its root cause: ``cause_kind`` (one of
+# CAUSE_KINDS) and ``cause`` (one sentence, the same for every row it explains, so the summary
+# groups rows by cause)
+VERDICT_EXTRA_COLUMNS = ["tolerance", "reason", "cause_kind", "cause"]
+#: paper_error: the paper's own formula, table or text is wrong (shown with the evidence);
+#: unpublished: the number depends on what the paper does not publish (trajectory, rates,
+#: tuning, metric), so it cannot be reproduced from the paper: not refuted;
+#: model: our model or the scenario differs from the paper's in a way the row names.
+CAUSE_KINDS = ("paper_error", "unpublished", "model")
 VERDICT_FILE_COLUMNS = VERDICT_COLUMNS + VERDICT_EXTRA_COLUMNS
 VERDICT_KINDS = ("exact", "approximate", "statistical", "claim")
 # exact, approximate -> reproduced | not_reproduced; statistical -> consistent | not_reproduced;

@@ -43,5 +43,5 @@ def generated_source() -> Callable[[str], str]:
 
 
 #: tests/synthetic_paper/ is a paper plug-in laid out as in the repository (copied into a copy of
-#: the repository by tests/test_synthetic_paper.py), not test modules.
+#: the repository by tests/shared/test_synthetic_paper.py), not test modules.
 collect_ignore = ["synthetic_paper"]

@@ -19,7 +19,6 @@ import yaml
 
 from pipeline.report.model import (
     FAILURE_WORDS,
-    VERDICT_EXTRA_COLUMNS,
     Block,
     Paragraph,
     Section,
@@ -73,7 +72,7 @@ def published_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Sect
     groups: dict[str, list[list[str]]] = {}
     marks: dict[str, list[int]] = {}
     cols = ["id", "quantity", "method", "published", "reproduced", "verdict", "note"]
-    cols += [c for c in VERDICT_EXTRA_COLUMNS if c in verdicts.columns]  # where recorded
+    cols += [c for c in ("tolerance", "reason") if c in verdicts.columns]  # where recorded
     for r in numbers[cols].itertuples(index=False):
         label = group_label(items.get(str(r.id).split("/")[0]))
         rows = groups.setdefault(label, [])

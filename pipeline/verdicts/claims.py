@@ -31,6 +31,7 @@ from typing import Any
 
 import jsonschema
 
+from pipeline.verdicts.cause import Cause
 from pipeline.verdicts.published import Problem, describe_error
 
 __all__ = ["CLAIM_VERDICTS", "ClaimFunction", "ClaimRegistry", "ClaimResult", "ClaimTest"]
@@ -45,7 +46,8 @@ class ClaimResult:
 
     ``reproduced``: what was computed; ``tolerance``: the threshold the test applied;
     ``reason``: why the verdict follows. ``suffix`` (e.g. the curve's name) makes the row id
-    ``<claim id>/<suffix>`` when a claim is judged on several curves.
+    ``<claim id>/<suffix>`` when a claim is judged on several curves; ``cause``: the root cause
+    when it is not upheld (:mod:`pipeline.verdicts.cause`).
     """
 
     verdict: str
@@ -57,6 +59,7 @@ class ClaimResult:
     published: str | None = None
     suffix: str = ""
     notes: tuple[str, ...] = ()
+    cause: Cause | None = None
 
     def __post_init__(self) -> None:
         if self.verdict not in CLAIM_VERDICTS:

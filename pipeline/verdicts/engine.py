@@ -11,7 +11,7 @@ The engine names no paper. A paper package gives it
 :func:`verdict_table` judges every item with its kind's rule (:mod:`pipeline.verdicts.kinds`)
 and every claim with its registered test, and :func:`write_verdicts` writes
 ``results/<slug>/verdicts.csv`` atomically with :data:`VERDICT_FILE_COLUMNS` (the contract
-columns, then ``tolerance`` and ``reason``).
+columns, then ``tolerance``, ``reason``, ``cause_kind`` and ``cause``).
 
 >>> from pipeline.verdicts.claims import ClaimRegistry
 >>> pub = {"items": [{"id": "A", "label": "Table 1", "kind": "exact", "quantity": "x_m",
@@ -31,6 +31,7 @@ import pandas as pd
 
 from pipeline.atomic import write_csv
 from pipeline.columns import VERDICT_FILE_COLUMNS, VERDICT_KINDS, VERDICTS
+from pipeline.verdicts.cause import cause_columns
 from pipeline.verdicts.claims import ClaimRegistry, ClaimResult
 from pipeline.verdicts.kinds import Found, consistency_note, judge, shown_unit
 from pipeline.verdicts.published import ItemCheck, load_published
@@ -77,6 +78,7 @@ def item_rows(item: Mapping[str, Any], found: Sequence[Found]) -> list[dict[str,
                 "note": _join(notes),
                 "tolerance": judged.tolerance,
                 "reason": judged.reason,
+                **cause_columns(judged.verdict, f.cause),
             }
         )
     return rows
@@ -98,6 +100,7 @@ def claim_rows(claim: Mapping[str, Any], results: Sequence[ClaimResult]) -> list
             "note": _join([f"claim: {claim['text']} [{where}]", claim.get("note"), *r.notes]),
             "tolerance": r.tolerance,
             "reason": f"test {test}: {r.reason}",
+            **cause_columns(r.verdict, r.cause),
         }
         for r in results
     ]

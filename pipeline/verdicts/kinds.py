@@ -37,6 +37,7 @@ from typing import Any
 
 import numpy as np
 
+from pipeline.verdicts.cause import Cause
 from pipeline.verdicts.printed import (
     REL_SLACK,
     equals_printed,
@@ -84,7 +85,8 @@ class Found:
     % error (exact items printing one); ``samples``: Monte Carlo samples (statistical);
     ``noise_free``: the noise-free value beside them; ``truth``: the true value (for the
     printed table's own consistency); ``standard_error``: of ``value`` when it is a Monte
-    Carlo estimate; ``suffix``: row id suffix when an item is judged on several curves.
+    Carlo estimate; ``suffix``: row id suffix when an item is judged on several curves;
+    ``cause``: the root cause when the row is not reproduced (:mod:`pipeline.verdicts.cause`).
     """
 
     method: str = ""
@@ -99,6 +101,7 @@ class Found:
     missing: str = ""
     shown: str | None = None
     notes: tuple[str, ...] = ()
+    cause: Cause | None = None
 
 
 @dataclass(frozen=True)

@@ -28,7 +28,7 @@ from pipeline.report.page_html import build_page, render_page
 from pipeline.report.paper_section import PaperParts, paper_section
 from pipeline.report.scoreboard import score_row
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def report(inputs: ReportInputs) -> PaperReport:

@@ -36,7 +36,7 @@ from pipeline.report.model import Bullets, ReportInputs
 from pipeline.report.page_html import render_page
 from pipeline.scenarios import scenario_names
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 REAL = REPO / "results" / "altimeter_attitude"
 SCEN_DIR = REPO / "config" / "scenarios" / "altimeter_attitude"
 SECTIONS = [

@@ -9,7 +9,7 @@
 * the generated navigation equations (eqs. 9, 11, 12 with spherical gravity) integrated as a
   nonlinear closed loop oscillate at the Schuler period;
 * every generated function equals the lambdified derivation at random points (that the
-  committed module is fresh, tests/test_generated_fresh.py checks for every paper).
+  committed module is fresh, tests/shared/test_generated_fresh.py checks for every paper).
 """
 
 from __future__ import annotations

@@ -527,7 +527,7 @@ def test_figures_are_byte_identical_on_rerun(built, tmp_path):
 def test_cli_output_does_not_depend_on_hash_seed(built, tmp_path):
     """Layout solvers can depend on set order; run the CLI in a fresh process
     with another PYTHONHASHSEED and compare bytes with the in-process run."""
-    repo = Path(__file__).resolve().parents[1]
+    repo = Path(__file__).resolve().parents[2]
     env = {**os.environ, "PYTHONHASHSEED": "12345", "PYTHONPATH": str(repo)}
     cmd = [
         sys.executable,

@@ -30,7 +30,7 @@ from pipeline.platform_drift.run import (
 from pipeline.platform_drift.scenario import build_scenario, load_scenario
 from pipeline.platform_drift.trajectory import haversine
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 SCEN = REPO / "config" / "scenarios" / "platform_drift"
 NAMES = ("stationary", "latitude_change", "longitude_change", "lat_lon_change")
 

@@ -1,4 +1,4 @@
-"""The platform_drift walkthrough notebook executes without errors and cites eqs. 32 and 36.
+"""The north_finding walkthrough notebook executes without errors and cites eqs. 47 and 50.
 
 The notebook is run with nbclient in a fresh python3 kernel whose working directory is the
 repository root and whose PYTHONPATH starts with it, so that ``derivations`` and ``pipeline``
@@ -13,21 +13,21 @@ import pytest
 
 from tests import notebook_harness as harness
 
-ROOT = Path(__file__).resolve().parents[1]
-NOTEBOOK = ROOT / "notebooks" / "platform_drift.ipynb"
+ROOT = Path(__file__).resolve().parents[2]
+NOTEBOOK = ROOT / "notebooks" / "north_finding.ipynb"
 
 
 def test_notebook_is_stored_without_outputs():
     harness.assert_stored_clean(NOTEBOOK)
 
 
-@pytest.mark.parametrize("ref", ["eq. 32", "eq. 36"])
-def test_notebook_cites_error_solutions(ref):
+@pytest.mark.parametrize("ref", ["eq. 47", "eq. 50"])
+def test_notebook_cites_method3_equations(ref):
     cells = [c for c in harness.read(NOTEBOOK).cells if ref in c.source]
     assert cells, f"no cell references {ref!r}"
 
 
-@pytest.mark.slow  # about 20 s (kernel start-up plus the SymPy dsolve of eqs. 29-36)
+@pytest.mark.slow  # about 30 s (kernel start-up plus the SymPy derivations)
 def test_notebook_executes_without_errors(monkeypatch):
     code = harness.execute(NOTEBOOK, monkeypatch)
     assert code, "the notebook has no code cells"

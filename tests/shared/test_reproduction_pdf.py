@@ -36,7 +36,7 @@ from tests.workflow_harness import NEEDS_RUN
 typst = pytest.importorskip("typst")
 from pipeline.report import reproduction_pdf as R  # noqa: E402 - needs typst
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 POPPLER = {name: shutil.which(name) for name in ("pdftoppm", "pdftotext", "pdfinfo", "pdffonts")}
 pytestmark = pytest.mark.skipif(
     POPPLER["pdftoppm"] is None or POPPLER["pdftotext"] is None or POPPLER["pdfinfo"] is None,

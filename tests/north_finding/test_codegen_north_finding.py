@@ -1,6 +1,6 @@
 """The generate command detects a stale pipeline/generated/north_finding.py (``--check``) and writes
 a fresh one (``--out``). That the committed module is fresh is checked for every paper by
-tests/test_generated_fresh.py."""
+tests/shared/test_generated_fresh.py."""
 
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ GENERATED = ROOT / "pipeline" / "generated" / "north_finding.py"
 @pytest.fixture(scope="module")
 def fresh_source(generated_source) -> str:
     """The regenerated module text, derived once per session (~6 s) and shared by the main()
-    calls below and tests/test_generated_fresh.py."""
+    calls below and tests/shared/test_generated_fresh.py."""
     return generated_source(generate.__name__)
 
 

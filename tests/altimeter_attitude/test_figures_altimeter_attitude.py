@@ -29,7 +29,7 @@ from pipeline.altimeter_attitude.workflow import FIGURES as WORKFLOW_FIGURES
 from pipeline.altimeter_attitude.workflow import SWEEP_FIGURE as WORKFLOW_SWEEP_FIGURE
 from pipeline.config import load_yaml
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 PUBLISHED = {
     "linear_kf": {"roll_rms_deg": 0.16, "pitch_rms_deg": 0.07},
     "ukf": {"roll_rms_deg": 0.21, "pitch_rms_deg": 0.10},

@@ -22,7 +22,7 @@ from pipeline.verdicts.claims import ClaimRegistry, ClaimResult
 from pipeline.verdicts.kinds import Found, judge
 from pipeline.verdicts.published import load_published
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 
 
 def item(**kw: Any) -> dict[str, Any]:
@@ -430,3 +430,31 @@ def test_one_published_schema_for_every_paper() -> None:
         data = load_published(REPO / "config" / "published" / f"{slug}.yaml")
         assert data["paper"] == slug
         assert all(i["label"] for i in data["items"]) and all(c["label"] for c in data["claims"])
+
+
+def test_a_cause_explains_only_the_rows_that_fail():
+    """One Cause object on several rows: written where the row is not reproduced or not upheld,
+    blank where it passes, and a cause never changes a verdict."""
+    from pipeline.verdicts.cause import Cause
+
+    cause = Cause("paper_error", "the paper's eq 21 drops a term")
+    item = {"id": "A", "label": "Table 1", "kind": "exact", "quantity": "x_m", "value": "2.50"}
+    passing = engine.item_rows(item, [Found(value=2.504, cause=cause)])[0]
+    failing = engine.item_rows(item, [Found(value=2.6, cause=cause)])[0]
+    assert (passing["verdict"], passing["cause_kind"], passing["cause"]) == ("reproduced", "", "")
+    assert (failing["verdict"], failing["cause_kind"]) == ("not_reproduced", "paper_error")
+    assert failing["cause"] == cause.text
+    claim = {"id": "C", "label": "Sec. 2", "text": "x is large", "predicate": {"test": "t"}}
+    rows = engine.claim_rows(
+        claim,
+        [
+            ClaimResult("not_upheld", "x = 1", "> 2", "compared", cause=cause),
+            ClaimResult("upheld", "x = 3", "> 2", "compared", suffix="b", cause=cause),
+        ],
+    )
+    assert [(r["verdict"], r["cause_kind"]) for r in rows] == [
+        ("not_upheld", "paper_error"),
+        ("upheld", ""),
+    ]
+    with pytest.raises(ValueError, match="cause kind 'typo'"):
+        Cause("typo", "x")

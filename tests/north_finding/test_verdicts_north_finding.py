@@ -21,7 +21,7 @@ from pipeline.north_finding.quantities import locate
 from pipeline.north_finding.verdicts import load_published, write_verdicts
 from pipeline.verdicts.engine import verdict_table
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 PUBLISHED = REPO / "config" / "published" / "north_finding.yaml"
 SEED = REPO.parent / "shared" / "papers" / "000_d5833b6222974346.txt"
 EXACT_ZERO = {"abs": 1e-9, "applies_to": "error_pct", "reason": "an exact inversion prints 0 %"}

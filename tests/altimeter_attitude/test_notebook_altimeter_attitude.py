@@ -16,7 +16,7 @@ import pytest
 
 from tests import notebook_harness as harness
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 NOTEBOOK = ROOT / "notebooks" / "altimeter_attitude.ipynb"
 SENTINEL = "ALL CHECKS PASSED"
 APPENDIX_A = "Appendix A, eq. 13a with the paper's G(x) = dt C(x)"

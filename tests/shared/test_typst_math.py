@@ -20,7 +20,7 @@ from tests.workflow_harness import NEEDS_RUN
 
 typst = pytest.importorskip("typst")
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 SLUGS = ("north_finding", "platform_drift", "altimeter_attitude")
 FORMS = ("printed_srepr", "derived_srepr", "residual_srepr")
 

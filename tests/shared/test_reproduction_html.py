@@ -44,7 +44,7 @@ from pipeline.report.document import Document, build_document
 from pipeline.report.reproduction_html import render_html, write_html
 from tests.workflow_harness import NEEDS_RUN
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 CHROMIUM = Path("/usr/bin/chromium")
 SCREENSHOT = ROOT / "results" / "reproduction_scoreboard.png"
 SLUGS = yaml.safe_load((ROOT / "config" / "config.yaml").read_text(encoding="utf-8"))["papers"]
