@@ -17,13 +17,46 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
-from pipeline.config import ConfigError, load_schema, validate
+from pipeline.config import ConfigError, inside_repository, load_schema, load_yaml, validate
 from pipeline.paper import SLUG_PATTERN, Context, Paper
 from pipeline.scenarios import scenario_names
 
-__all__ = ["ROOT", "load_paper", "load_papers", "context", "validate_scenarios"]
+__all__ = [
+    "ROOT",
+    "context",
+    "load_paper",
+    "load_papers",
+    "validate_scenarios",
+    "validate_workflow_config",
+]
 
 ROOT = Path(__file__).resolve().parents[1]
+
+
+def validate_workflow_config(
+    config: Mapping[str, Any], configfiles: Sequence[str | Path], root: Path = ROOT
+) -> None:
+    """The workflow config, checked before anything else: every config file given to Snakemake
+    re-read strictly (Snakemake's own reader keeps the last of duplicate keys and accepts
+    ``.nan``), the merged config validated against ``config/schemas/config.schema.json``, and
+    ``results_dir`` and ``reports_dir`` kept inside the repository."""
+    for path in configfiles:
+        load_yaml(path)
+    source = ", ".join(str(p) for p in configfiles) or "the workflow config"
+    papers = config.get("papers")
+    if not isinstance(papers, list):  # the schema names the type wanted
+        validate(config, load_schema("config"), source)
+    listed = [p for p in papers if isinstance(p, str)] if isinstance(papers, list) else []
+    known = ["papers", "results_dir", "reports_dir", *listed]
+    unknown = sorted(str(k) for k in config if k not in known)
+    if unknown:
+        raise ConfigError(
+            f"{source}: {unknown[0]}: unknown key; allowed keys: papers, results_dir, reports_dir "
+            f"and the settings of a listed paper ({listed})"
+        )
+    validate(config, load_schema("config"), source)
+    for field in ("results_dir", "reports_dir"):
+        inside_repository(str(config[field]), field, source, root)
 
 
 def load_paper(slug: str, root: Path = ROOT, source: str = "config/config.yaml") -> Paper:

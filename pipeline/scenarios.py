@@ -6,17 +6,39 @@ every one, and validates them all when it is parsed, so a bad file stops it befo
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Any
 
 __all__ = ["scenario_names", "decisions_with_values", "whole_multiple"]
 
 
+#: A scenario name: it becomes a directory of results/ and a wildcard value.
+NAME_PATTERN = re.compile(r"^[a-z0-9][a-z0-9_-]{0,63}$")
+
+
 def scenario_names(directory: str | Path) -> list[str]:
-    """Names of every scenario file ``<directory>/<name>.yaml``, sorted."""
-    names = sorted(p.stem for p in Path(directory).glob("*.yaml"))
+    """Names of every scenario file ``<directory>/<name>.yaml``, sorted; ConfigError for a
+    name that cannot be a results directory and for a scenario file that would be ignored."""
+    from pipeline.config import ConfigError
+
+    directory = Path(directory)
+    ignored = sorted(p.name for p in directory.glob("*.yml"))
+    if ignored:
+        raise ConfigError(
+            f"{directory / ignored[0]}: file name ends in .yml; allowed: scenario files end in "
+            ".yaml (a .yml file would be ignored)"
+        )
+    names = sorted(p.name[: -len(".yaml")] for p in directory.glob("*.yaml"))
+    for name in names:
+        if not NAME_PATTERN.match(name):
+            raise ConfigError(
+                f"{directory / (name + '.yaml')}: scenario name {name!r}: allowed: "
+                f"{NAME_PATTERN.pattern} (lower-case letters, digits, '_' and '-'; it names a "
+                "results directory)"
+            )
     if not names:
-        raise ValueError(f"{directory}: no scenario files (*.yaml) found")
+        raise ConfigError(f"{directory}: no scenario files (*.yaml) found")
     return names
 
 

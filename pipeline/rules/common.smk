@@ -4,9 +4,6 @@ import os
 import sys
 from pathlib import Path
 
-from snakemake.utils import validate
-
-validate(config, "../../config/schemas/config.schema.json")
 
 # Scripts import `derivations` and `pipeline` from the repository root: the workflow puts the
 # root on the PYTHONPATH of its jobs (set here for them; nothing is required from the caller).
@@ -16,7 +13,26 @@ os.environ.update(
 sys.path.insert(0, workflow.basedir)
 
 from pipeline.code_inputs import module_closure, notebook_imports, script_imports  # noqa: E402
-from pipeline.registry import context, load_papers, validate_scenarios  # noqa: E402
+from pipeline.config import ConfigError  # noqa: E402
+from pipeline.registry import (  # noqa: E402
+    context,
+    load_papers,
+    validate_scenarios,
+    validate_workflow_config,
+)
+
+try:
+    # config/config.yaml read strictly (duplicate keys, NaN, aliases), validated, its
+    # directories kept inside the repository; then the plug-ins and every scenario file
+    validate_workflow_config(config, workflow.configfiles, Path(workflow.basedir))
+    PAPERS = load_papers(config["papers"])
+    CONTEXTS = {slug: context(paper, config) for slug, paper in PAPERS.items()}
+    for _slug, _paper in PAPERS.items():
+        validate_scenarios(_paper, CONTEXTS[_slug].scenarios, CONTEXTS[_slug].scenarios_dir)
+except ConfigError as _error:
+    # one clean message before any job, not Snakemake's stack frames
+    sys.stderr.write(f"{_error}\n")
+    raise SystemExit(1) from None
 
 RESULTS = config["results_dir"]
 REPORTS = config["reports_dir"]
@@ -28,11 +44,6 @@ ENV = "../envs/inertial-repro.yaml"
 CAPTIONS = "../../reports/snakemake"
 SCRIPTS = "pipeline/scripts"
 
-PAPERS = load_papers(config["papers"])
-CONTEXTS = {slug: context(paper, config) for slug, paper in PAPERS.items()}
-# every scenario file is validated when the workflow is parsed, before any job runs
-for _slug, _paper in PAPERS.items():
-    validate_scenarios(_paper, CONTEXTS[_slug].scenarios, CONTEXTS[_slug].scenarios_dir)
 
 
 def code(*modules, script=None):
