@@ -120,7 +120,7 @@ STEPS = (
     ),
     Step(
         "figures",
-        "pipeline.altimeter_attitude.steps:figures",
+        "pipeline.altimeter_attitude.figures:figures_step",
         inputs=lambda ctx: {
             "truth": _published(ctx, "truth.csv"),
             "timeseries": _published(ctx, "timeseries.csv"),
@@ -132,7 +132,7 @@ STEPS = (
     ),
     Step(
         "sweep_figure",
-        "pipeline.altimeter_attitude.steps:sweep_figure",
+        "pipeline.altimeter_attitude.figures_sweep:sweep_figure_step",
         inputs=lambda ctx: {"sweep": f"{ctx.results}/sweep.csv", **ctx.published_inputs},
         outputs=lambda ctx: {
             "png": ctx.figure(SWEEP_FIGURE),

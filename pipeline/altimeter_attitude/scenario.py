@@ -14,8 +14,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from pipeline.altimeter_attitude.profiles import Profiles
 from pipeline.altimeter_attitude.sensors import InitialSpec, SensorSpec
-from pipeline.altimeter_attitude.trajectory import Profiles
 from pipeline.config import ConfigError, load_schema, load_yaml, sha256_of, validate
 from pipeline.scenarios import decisions_with_values, whole_multiple
 

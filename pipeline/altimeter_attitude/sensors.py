@@ -19,7 +19,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from pipeline.altimeter_attitude.trajectory import Profiles, Truth, truth
+from pipeline.altimeter_attitude.profiles import Profiles
+from pipeline.altimeter_attitude.trajectory import Truth, truth
 
 __all__ = [
     "SensorSpec",

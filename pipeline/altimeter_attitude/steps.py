@@ -1,13 +1,15 @@
 """The altimeter_attitude workflow steps, called by :func:`pipeline.steps.run_step` as
 ``step(inputs, outputs, params, log)`` (named paths as declared in
-:mod:`pipeline.altimeter_attitude.paper`)."""
+:mod:`pipeline.altimeter_attitude.paper`). The figure steps are
+:func:`pipeline.altimeter_attitude.figures.figures_step` and
+:func:`pipeline.altimeter_attitude.figures_sweep.sweep_figure_step`."""
 
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from pathlib import Path
 
-__all__ = ["simulate", "sweep", "verdicts", "figures", "sweep_figure"]
+__all__ = ["simulate", "sweep", "verdicts"]
 
 
 def simulate(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
@@ -41,25 +43,3 @@ def verdicts(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) 
     results = Path(inputs["results"][0]).parent
     frame = write_verdicts(inputs["published"], inputs["scenario"], results, outputs["verdicts"])
     log(frame["verdict"].value_counts().to_string())
-
-
-def figures(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
-    """Figs. 2-12 of the paper and the filter comparison (PNG and SVG)."""
-    from pipeline.altimeter_attitude.figures import published_rms, write_all
-    from pipeline.config import load_yaml
-
-    published = published_rms(load_yaml(inputs["published"]))
-    pngs = [Path(p).name for p in outputs["png"]]
-    out_dir = Path(outputs["png"][0]).parent
-    written = write_all(Path(inputs["truth"]).parent, out_dir, published, names=pngs)
-    expected = sorted([*outputs["png"], *outputs["svg"]])
-    if sorted(map(str, written)) != expected:
-        raise ValueError(f"wrote {sorted(map(str, written))}, declared {expected}")
-
-
-def sweep_figure(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
-    from pipeline.altimeter_attitude.figures import published_rms, write_sweep
-    from pipeline.config import load_yaml
-
-    published = published_rms(load_yaml(inputs["published"]))
-    write_sweep(Path(inputs["sweep"]), Path(outputs["png"]), published)

@@ -117,7 +117,7 @@ STEPS = (
     ),
     Step(
         "figures",
-        "pipeline.north_finding.steps:figures",
+        "pipeline.north_finding.figures:figures_step",
         inputs=lambda ctx: {
             **ctx.published_inputs,
             **{n: _published(ctx, f"{n}.csv") for n in ("estimates", "mc_trials", "sensitivity")},

@@ -1,4 +1,5 @@
-"""Figures of the altimeter-attitude paper (pipeline.altimeter_attitude.figures).
+"""Figures of the altimeter-attitude paper (pipeline.altimeter_attitude.figures and the
+figures_* modules it draws with; published_rms and maneuvers, which they read).
 
 Synthetic truth/timeseries frames with known values stand in for a scenario's results (the
 pipeline itself takes ~9 s for 4 runs): the tests check that each figure draws exactly the
@@ -25,8 +26,26 @@ from pipeline.altimeter_attitude.columns import (
     TIMESERIES_COLUMNS,
     TRUTH_COLUMNS,
 )
-from pipeline.altimeter_attitude.workflow import FIGURES as WORKFLOW_FIGURES
-from pipeline.altimeter_attitude.workflow import SWEEP_FIGURE as WORKFLOW_SWEEP_FIGURE
+from pipeline.altimeter_attitude.figures_rms import (
+    compare_filters,
+    fig7_lkf_rms_error,
+    fig8_lkf_c_rms,
+    fig10_norm_error,
+    fig12_ukf_rms_error,
+)
+from pipeline.altimeter_attitude.figures_sigma import fig9_lkf_sigma, fig11_ukf_sigma
+from pipeline.altimeter_attitude.figures_style import FILTER_STYLE
+from pipeline.altimeter_attitude.figures_sweep import SWEEP_PARAMETERS, sweep_figure, write_sweep
+from pipeline.altimeter_attitude.figures_truth import (
+    fig2_third_row,
+    fig3_specific_force,
+    fig4_vertical_channel,
+    fig5_angular_rates,
+    fig6_roll_pitch,
+)
+from pipeline.altimeter_attitude.maneuvers import maneuver_intervals
+from pipeline.altimeter_attitude.published_rms import published_rms
+from pipeline.altimeter_attitude.workflow import FIGURES
 from pipeline.config import load_yaml
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -184,15 +203,10 @@ def _check_common(fig, number: str) -> None:
 # ---------------------------------------------------------------------------------------------
 
 
-def test_figure_names_match_the_workflow():
-    assert F.FIGURES == WORKFLOW_FIGURES
-    assert F.SWEEP_FIGURE == WORKFLOW_SWEEP_FIGURE
-
-
 def test_write_all_writes_valid_non_blank_pngs(written):
     # each figure as PNG (the pages) and SVG (the PDF report's vector twin)
     assert [p.name for p in written] == [
-        n.replace(".png", ext) for n in F.FIGURES for ext in (".png", ".svg")
+        n.replace(".png", ext) for n in FIGURES for ext in (".png", ".svg")
     ]
     for svg in written[1::2]:
         head = svg.read_bytes()[:400]
@@ -220,7 +234,7 @@ def test_writing_twice_is_byte_identical(written, scenario_dir, tmp_path):
 
 def test_fig7_draws_linear_kf_rms_and_published_values():
     ts = make_timeseries()
-    fig = F.fig7_lkf_rms_error(ts, PUBLISHED, "scenario x", summary=make_summary())
+    fig = fig7_lkf_rms_error(ts, PUBLISHED, "scenario x", summary=make_summary())
     _check_common(fig, "Fig. 7")
     (ax,) = fig.axes
     roll = _line(ax, "roll, ours")
@@ -238,14 +252,14 @@ def test_fig7_draws_linear_kf_rms_and_published_values():
 
 
 def test_fig7_without_published_has_no_overlay():
-    fig = F.fig7_lkf_rms_error(make_timeseries(), None)
+    fig = fig7_lkf_rms_error(make_timeseries(), None)
     assert not [ln for ln in fig.axes[0].lines if "published" in ln.get_label()]
     assert len(fig.axes[0].lines) == 2
 
 
 def test_fig12_draws_ukf_rms_and_published_values():
     ts = make_timeseries()
-    fig = F.fig12_ukf_rms_error(ts, PUBLISHED)
+    fig = fig12_ukf_rms_error(ts, PUBLISHED)
     _check_common(fig, "Fig. 12")
     (ax,) = fig.axes
     np.testing.assert_array_equal(
@@ -256,7 +270,7 @@ def test_fig12_draws_ukf_rms_and_published_values():
 
 
 @pytest.mark.parametrize(
-    ("func", "filt", "number"), [(F.fig9_lkf_sigma, "linear_kf", 9), (F.fig11_ukf_sigma, "ukf", 11)]
+    ("func", "filt", "number"), [(fig9_lkf_sigma, "linear_kf", 9), (fig11_ukf_sigma, "ukf", 11)]
 )
 def test_sigma_figures_draw_sigma_solid_and_error_dashed(func, filt, number):
     ts = make_timeseries()
@@ -277,7 +291,7 @@ def test_sigma_figures_draw_sigma_solid_and_error_dashed(func, filt, number):
 
 def test_fig8_draws_the_three_c_errors():
     ts = make_timeseries()
-    fig = F.fig8_lkf_c_rms(ts)
+    fig = fig8_lkf_c_rms(ts)
     _check_common(fig, "Fig. 8")
     (ax,) = fig.axes
     for k in (1, 2, 3):
@@ -289,26 +303,26 @@ def test_fig8_draws_the_three_c_errors():
 
 def test_fig10_norm_error_log_scale_and_optional_curves():
     ts = make_timeseries()
-    fig = F.fig10_norm_error(ts)
+    fig = fig10_norm_error(ts)
     _check_common(fig, "Fig. 10")
     (ax,) = fig.axes
     assert ax.get_yscale() == "log"
     assert len(ax.lines) == 3
-    lkf = _line(ax, F.FILTER_STYLE["linear_kf"][1])
+    lkf = _line(ax, FILTER_STYLE["linear_kf"][1])
     y = _series(ts, "linear_kf", "norm_error_rms")
     np.testing.assert_array_equal(lkf.get_ydata(), y)
     # only linear_kf present: one curve; zeros would be gaps (NaN) on the log axis
-    fig = F.fig10_norm_error(make_timeseries(("linear_kf", "ukf")))
+    fig = fig10_norm_error(make_timeseries(("linear_kf", "ukf")))
     assert len(fig.axes[0].lines) == 1
 
 
 def test_truth_figures_draw_the_truth_columns():
     truth = make_truth()
-    fig = F.fig2_third_row(truth)
+    fig = fig2_third_row(truth)
     _check_common(fig, "Fig. 2")
     for col, ln in zip(("c31", "c32", "c33"), fig.axes[0].lines, strict=True):
         np.testing.assert_array_equal(ln.get_ydata(), truth[col].to_numpy())
-    fig = F.fig3_specific_force(truth)
+    fig = fig3_specific_force(truth)
     _check_common(fig, "Fig. 3")
     assert all("m/s$^2$" in ax.get_ylabel() for ax in fig.axes[:2])
     np.testing.assert_array_equal(
@@ -317,16 +331,16 @@ def test_truth_figures_draw_the_truth_columns():
     np.testing.assert_array_equal(
         _line(fig.axes[2], "load factor").get_ydata(), truth["load_factor"].to_numpy()
     )
-    fig = F.fig4_vertical_channel(truth)
+    fig = fig4_vertical_channel(truth)
     _check_common(fig, "Fig. 4")
     alt = _line(fig.axes[1], "altimeter samples")
     assert len(alt.get_ydata()) == len(truth) - 1  # NaN at t = 0 dropped
     assert alt.get_linestyle() == "None"
     assert "(m/s)" in fig.axes[0].get_ylabel() and "(m)" in fig.axes[1].get_ylabel()
-    fig = F.fig5_angular_rates(truth)
+    fig = fig5_angular_rates(truth)
     _check_common(fig, "Fig. 5")
     assert all("(deg/s)" in ax.get_ylabel() for ax in fig.axes)
-    fig = F.fig6_roll_pitch(truth)
+    fig = fig6_roll_pitch(truth)
     _check_common(fig, "Fig. 6")
     np.testing.assert_array_equal(
         _line(fig.axes[0], "pitch").get_ydata(), truth["pitch_deg"].to_numpy()
@@ -335,27 +349,27 @@ def test_truth_figures_draw_the_truth_columns():
 
 def test_maneuver_intervals_and_shading():
     truth = make_truth()
-    assert F.maneuver_intervals(truth) == [MANEUVER]
+    assert maneuver_intervals(truth) == [MANEUVER]
     ts = make_timeseries()
-    fig = F.compare_filters(ts, "s", F.maneuver_intervals(truth))
+    fig = compare_filters(ts, "s", maneuver_intervals(truth))
     assert fig.get_suptitle().startswith("Comparison")
     for ax, angle in zip(fig.axes, ("roll", "pitch"), strict=True):
         assert ax.get_yscale() == "log"
         assert len(ax.patches) == 1  # one shaded maneuver
         assert len(ax.lines) == len(ALTIMETER_FILTERS)
         for filt in ALTIMETER_FILTERS:
-            ln = _line(ax, F.FILTER_STYLE[filt][1])
+            ln = _line(ax, FILTER_STYLE[filt][1])
             np.testing.assert_array_equal(ln.get_ydata(), _series(ts, filt, f"{angle}_rms_deg"))
 
 
 def test_missing_filter_is_named():
     with pytest.raises(ValueError, match="'ukf'"):
-        F.fig12_ukf_rms_error(make_timeseries(("linear_kf",)), PUBLISHED)
+        fig12_ukf_rms_error(make_timeseries(("linear_kf",)), PUBLISHED)
 
 
 def test_published_rms_of_the_config_file():
     data = load_yaml(ROOT / "config/published/altimeter_attitude.yaml")
-    assert F.published_rms(data) == PUBLISHED
+    assert published_rms(data) == PUBLISHED
 
 
 def _entry(**kw):
@@ -380,31 +394,31 @@ def _entry(**kw):
 def test_published_rms_rejects_malformed_entries(entry, match):
     good = {"id": "V1", "kind": "approximate", "quantity": "roll_rms_deg", "value": "0.16", "select": {"filter": "linear_kf"}}  # fmt: skip
     with pytest.raises(ValueError, match=match):
-        F.published_rms({"items": [good, entry]})
-    assert F.published_rms({"items": [good]}) == {"linear_kf": {"roll_rms_deg": 0.16}}
+        published_rms({"items": [good, entry]})
+    assert published_rms({"items": [good]}) == {"linear_kf": {"roll_rms_deg": 0.16}}
 
 
 def test_published_rms_needs_items_and_skips_other_quantities():
     with pytest.raises(ValueError, match="items"):
-        F.published_rms({"claims": []})
+        published_rms({"claims": []})
     with pytest.raises(ValueError, match="items"):
-        F.published_rms(None)
+        published_rms(None)
     other = {"id": "X", "kind": "approximate", "quantity": "yaw_rms_deg", "value": "1.0", "select": {"filter": "ukf"}}  # fmt: skip
-    assert F.published_rms({"items": [other]}) == {}
+    assert published_rms({"items": [other]}) == {}
 
 
 def test_sweep_figure_maps_the_sweep_rows(tmp_path):
     frame = make_sweep()
-    fig = F.sweep_figure(frame, PUBLISHED)
+    fig = sweep_figure(frame, PUBLISHED)
     assert fig.get_suptitle().startswith("Sweep")
     assert len(fig.axes) == 3
-    assert [ax.get_xlabel() for ax in fig.axes] == list(F.SWEEP_PARAMETERS.values())
+    assert [ax.get_xlabel() for ax in fig.axes] == list(SWEEP_PARAMETERS.values())
     assert "(deg)" in fig.axes[0].get_ylabel()
-    for ax, param in zip(fig.axes, F.SWEEP_PARAMETERS, strict=True):
+    for ax, param in zip(fig.axes, SWEEP_PARAMETERS, strict=True):
         rows = frame[frame["parameter"] == param]
         for filt in ("linear_kf", "ukf"):
             cur = rows[rows["filter"] == filt].sort_values("value")
-            label = F.FILTER_STYLE[filt][1]
+            label = FILTER_STYLE[filt][1]
             roll = _line(ax, f"{label}: roll")
             pitch = _line(ax, f"{label}: pitch")
             np.testing.assert_array_equal(roll.get_xdata(), cur["value"].to_numpy())
@@ -418,20 +432,18 @@ def test_sweep_figure_maps_the_sweep_rows(tmp_path):
     assert not small
     csv = tmp_path / "sweep.csv"
     frame.to_csv(csv, index=False)
-    a = F.write_sweep(csv, tmp_path / "a" / "fig_sweep.png", PUBLISHED)
-    b = F.write_sweep(csv, tmp_path / "b" / "fig_sweep.png", PUBLISHED)
+    a = write_sweep(csv, tmp_path / "a" / "fig_sweep.png", PUBLISHED)
+    b = write_sweep(csv, tmp_path / "b" / "fig_sweep.png", PUBLISHED)
     assert a.read_bytes() == b.read_bytes()
     img = mpimg.imread(a)
     assert img.shape[1] > 1000 and float(img[..., :3].std()) > 0.05
     assert not [
-        ln for ln in F.sweep_figure(frame, None).axes[0].lines if "published" in ln.get_label()
+        ln for ln in sweep_figure(frame, None).axes[0].lines if "published" in ln.get_label()
     ]
 
 
 def test_figures_step_writes_exactly_its_outputs(scenario_dir, tmp_path):
     """The workflow's figures step writes the declared PNG and SVG files and nothing else."""
-    from pipeline.altimeter_attitude.steps import figures
-
     pngs = ["fig2_third_row.png", "fig7_lkf_rms_error.png"]
     out_dir = tmp_path / "figures"
     outputs = {
@@ -443,12 +455,12 @@ def test_figures_step_writes_exactly_its_outputs(scenario_dir, tmp_path):
         "timeseries": str(scenario_dir / "timeseries.csv"),
         "published": str(ROOT / "config/published/altimeter_attitude.yaml"),
     }
-    figures(inputs, outputs, {}, print)
+    F.figures_step(inputs, outputs, {}, print)
     names = sorted(p.name for p in out_dir.iterdir())
     assert names == sorted(Path(p).name for p in [*outputs["png"], *outputs["svg"]])
     outputs["png"].append(str(out_dir / "fig8_lkf_c_rms.png"))  # declared, but not asked for
     with pytest.raises(ValueError, match="declared"):
-        figures(inputs, outputs, {}, print)
+        F.figures_step(inputs, outputs, {}, print)
 
 
 def test_unknown_figure_name_and_bad_published_file(scenario_dir, tmp_path, capsys):
@@ -461,3 +473,22 @@ def test_unknown_figure_name_and_bad_published_file(scenario_dir, tmp_path, caps
     rc = F.main(["--scenario-dir", str(scenario_dir), "--out-dir", str(tmp_path), "--published", str(bad)])  # fmt: skip
     assert rc == 2
     assert "V1" in capsys.readouterr().err
+
+
+def test_sweep_figure_step_writes_the_png_and_its_svg(tmp_path):
+    """The workflow's sweep_figure step: fig_sweep.png and fig_sweep.svg from sweep.csv."""
+    from pipeline.altimeter_attitude.figures_sweep import sweep_figure_step
+
+    csv = tmp_path / "sweep.csv"
+    make_sweep().to_csv(csv, index=False)
+    png = tmp_path / "figures" / "fig_sweep.png"
+    inputs = {
+        "sweep": str(csv),
+        "published": str(ROOT / "config/published/altimeter_attitude.yaml"),
+    }
+    sweep_figure_step(inputs, {"png": str(png)}, {}, print)
+    assert sorted(p.name for p in png.parent.iterdir()) == ["fig_sweep.png", "fig_sweep.svg"]
+    assert (
+        png.read_bytes()
+        == write_sweep(csv, tmp_path / "again" / "fig_sweep.png", PUBLISHED).read_bytes()
+    )

@@ -2,8 +2,9 @@
 
 The body rates, specific force, vertical velocity and altitude of
 :mod:`pipeline.altimeter_attitude.trajectory` are integrated independently (solve_ivp,
-DOP853) and compared with the analytic truth; the channel derivatives are checked by finite
-differences; bad scenarios must fail with the field named.
+DOP853) and compared with the analytic truth; the channel derivatives of
+:mod:`pipeline.altimeter_attitude.profiles` are checked by finite differences; bad scenarios
+must fail with the field named.
 """
 
 from __future__ import annotations
@@ -15,13 +16,8 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from pipeline.altimeter_attitude.trajectory import (
-    CHANNELS,
-    Profiles,
-    load_factor,
-    mat_from_euler,
-    truth,
-)
+from pipeline.altimeter_attitude.profiles import CHANNELS, Profiles
+from pipeline.altimeter_attitude.trajectory import load_factor, mat_from_euler, truth
 
 G = 9.80665
 T_END = 90.0

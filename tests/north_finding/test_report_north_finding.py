@@ -36,6 +36,9 @@ from pipeline.north_finding.columns import (
     METHOD_QUANTITIES,
     SENSITIVITY_COLUMNS,
 )
+from pipeline.north_finding.figures_spec import FIGURE_FILES
+from pipeline.north_finding.percent_errors import abs_error_quantiles, published_error_pct
+from pipeline.north_finding.published_items import canonical_quantity, load_published
 from pipeline.north_finding.report_results import resolve_dotted
 from pipeline.report import html as H
 from pipeline.report.model import ReportInputs, Table
@@ -507,7 +510,7 @@ def built(tmp_path_factory) -> dict[str, Path]:
 
 
 def test_every_figure_is_a_reasonable_png_and_svg(built):
-    for stem in F.FIGURE_FILES:
+    for stem in FIGURE_FILES:
         png, svg = built["figures"] / f"{stem}.png", built["figures"] / f"{stem}.svg"
         w, h = png_size(png)
         assert 600 <= w <= 3000 and 400 <= h <= 2000, (stem, w, h)
@@ -518,7 +521,7 @@ def test_every_figure_is_a_reasonable_png_and_svg(built):
 
 def test_figures_are_byte_identical_on_rerun(built, tmp_path):
     F.run(built["results"] / "paper", built["published"], tmp_path)
-    for stem in F.FIGURE_FILES:
+    for stem in FIGURE_FILES:
         for ext in ("png", "svg"):
             a, b = built["figures"] / f"{stem}.{ext}", tmp_path / f"{stem}.{ext}"
             assert a.read_bytes() == b.read_bytes(), f"{stem}.{ext} differs between runs"
@@ -542,7 +545,7 @@ def test_cli_output_does_not_depend_on_hash_seed(built, tmp_path):
     ]
     proc = subprocess.run(cmd, cwd=repo, env=env, capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr
-    for stem in F.FIGURE_FILES:
+    for stem in FIGURE_FILES:
         for ext in ("png", "svg"):
             a, b = built["figures"] / f"{stem}.{ext}", tmp_path / f"{stem}.{ext}"
             assert a.read_bytes() == b.read_bytes(), f"{stem}.{ext} depends on PYTHONHASHSEED"
@@ -561,7 +564,7 @@ def test_abs_error_quantiles_match_numpy():
             "error_pct": err,
         }
     )
-    q = F.abs_error_quantiles(trials).loc[("L1", "phi_deg")]
+    q = abs_error_quantiles(trials).loc[("L1", "phi_deg")]
     np.testing.assert_allclose(
         q[["p05", "p50", "p95"]].to_numpy(float), np.quantile(np.abs(err), [0.05, 0.5, 0.95])
     )
@@ -569,21 +572,40 @@ def test_abs_error_quantiles_match_numpy():
 
 
 def test_published_error_pct_reads_the_yaml(built):
-    items, claims = F.load_published(built["published"])
-    pub = F.published_error_pct(items, "real")
+    items, claims = load_published(built["published"])
+    pub = published_error_pct(items, "real")
     assert pub[("L4", "phi_deg")] == pytest.approx(0.145)
     assert pub[("A3", "psi_deg")] == pytest.approx(0.502)
     assert ("A1c1", "psi_deg") in pub.index and len(claims) == len(CLAIMS)
     assert (
-        F.canonical_quantity("phi") == "phi_deg"
-        and F.canonical_quantity("gyro_bias") == "gyro_bias_rad_s"
+        canonical_quantity("phi") == "phi_deg"
+        and canonical_quantity("gyro_bias") == "gyro_bias_rad_s"
     )
 
 
 def test_figures_render_without_sensitivity_or_provenance(tmp_path):
     paths = make_inputs(tmp_path, with_optional=False)
     written = F.run(paths["results"] / "paper", paths["published"], paths["figures"])
-    assert {p.name for p in written} == {f"{s}.{e}" for s in F.FIGURE_FILES for e in ("png", "svg")}
+    assert {p.name for p in written} == {f"{s}.{e}" for s in FIGURE_FILES for e in ("png", "svg")}
+
+
+def test_figures_step_checks_its_declared_outputs(built, tmp_path):
+    """The workflow's figures step writes every figure and refuses a declaration that differs."""
+    out = tmp_path / "figures"
+    outputs = {
+        "png": [str(out / f"{s}.png") for s in FIGURE_FILES],
+        "svg": [str(out / f"{s}.svg") for s in FIGURE_FILES],
+    }
+    inputs = {
+        "mc_trials": str(built["results"] / "paper" / "mc_trials.csv"),
+        "published": str(built["published"]),
+    }
+    F.figures_step(inputs, outputs, {}, print)
+    for stem in FIGURE_FILES:
+        assert (out / f"{stem}.png").read_bytes() == (built["figures"] / f"{stem}.png").read_bytes()
+    outputs["svg"].pop()  # the sensitivity SVG is written but no longer declared
+    with pytest.raises(ValueError, match="declares"):
+        F.figures_step(inputs, outputs, {}, print)
 
 
 # --------------------------------------------------------------------------- page
@@ -594,7 +616,7 @@ def test_page_is_well_formed_and_self_contained(built):
     p = parse(text)
     assert p.errors == []
     imgs = [a for t, a in p.starts if t == "img"]
-    assert len(imgs) == len(F.FIGURE_FILES)
+    assert len(imgs) == len(FIGURE_FILES)
     for a in imgs:
         assert (a.get("src") or "").startswith("data:image/png;base64,"), a.get("src", "")[:40]
     for t, a in p.starts:
@@ -607,7 +629,7 @@ def test_page_is_well_formed_and_self_contained(built):
 
 
 def test_one_section_per_published_table(built):
-    items, _ = F.load_published(built["published"])
+    items, _ = load_published(built["published"])
     expected = {f"table-{int(n)}" for n in items["table_no"].dropna().unique()}
     assert len(expected) == 12
     p = parse(built["out"].read_text(encoding="utf-8"))
