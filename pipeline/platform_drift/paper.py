@@ -72,8 +72,11 @@ STEPS = (
         "pipeline.platform_drift.steps:verdicts",
         inputs=lambda ctx: {
             **ctx.published_inputs,
+            "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
+            "scenario_schema": SCENARIO_SCHEMA,
             "errors": ctx.per_scenario("errors.csv"),
             "errors_long": ctx.per_scenario("errors_long.csv"),
+            "diagnostic": ctx.per_scenario("errors_diagnostic.csv"),
         },
         outputs=lambda ctx: {"verdicts": f"{ctx.results}/verdicts.csv"},
         report={"verdicts": ("Verdicts", "verdicts")},
