@@ -1,9 +1,14 @@
 """Figures 5-8 of the platform-drift paper, panel by panel, from errors.csv.
 
-Panel (1): the trajectory (or, for the stationary vehicle, the no-drift case);
-panels (2)-(4): position error against time for the channel-1, channel-3 and combined drift
-cases, with the three curves (proposed_analytic, proposed_simulated, strapdown) and the
-true-azimuth diagnostic (dashed) that shows which part of the error eqs. 33-36 model.
+Panel (1): the trajectory (or, for the stationary vehicle, the no-drift case, in µm);
+panels (2)-(4): position error (km) against time (s) for the channel-1, channel-3 and
+combined drift cases, with the three curves (proposed_analytic, proposed_simulated,
+strapdown) and the true-azimuth diagnostic (dotted) that shows which part of the error
+eqs. 33-36 model. The simulated proposed curve is drawn last, dashed with open markers, so
+that it stays visible where it lies on the strapdown curve (the finding of this
+reproduction: with a channel-3 drift the two coincide); an inset gives their difference in
+metres. In a scenario whose vehicle moves the analytic curve is labelled as the stationary
+formula it is.
 The values the paper prints for a panel (``config/published/platform_drift.yaml``, by its
 ``figure: "Fig. N (k)"``) are overlaid: the strapdown error at 2 h as a black diamond, the
 crossover time as a dotted vertical line.
@@ -41,25 +46,81 @@ FIGURES = {
     "longitude_change": (7, "large longitude change"),
     "lat_lon_change": (8, "large latitude and longitude change"),
 }
+#: drawing order: the simulated proposed curve last, on top of the strapdown one
 STYLE = {
     "proposed_analytic": dict(color="tab:blue", lw=1.6, label="proposed, analytic (eqs. 32/36)"),
-    "proposed_simulated": dict(color="tab:green", lw=1.6, label="proposed, nonlinear simulation"),
-    "strapdown": dict(color="tab:red", lw=1.6, label="strapdown"),
     "proposed_true_azimuth": dict(
-        color="0.4", lw=1.2, ls="--", label="proposed, true azimuth rate (diagnostic)"
+        color="0.45", lw=1.3, ls=":", label="proposed, true azimuth rate (diagnostic)"
     ),
-}
+    "strapdown": dict(color="tab:red", lw=2.6, alpha=0.8, label="strapdown"),
+    "proposed_simulated": dict(
+        color="tab:purple", lw=1.4, ls="--", marker="o", mfc="none", ms=4.5, markevery=36,
+        label="proposed, nonlinear simulation", zorder=4,
+    ),
+}  # fmt: skip
+ANALYTIC_MOVING = "proposed, analytic eqs. 32/36 (for a vehicle at rest; start latitude)"
 CASES = {"ch1": "channel-1 drift 0.01 deg/h", "ch3": "channel-3 drift 0.1 deg/h", "ch1_ch3": "both"}
 
 
-def _panel(ax, frame: pd.DataFrame, case: str, title: str) -> None:
+def _curve(frame: pd.DataFrame, case: str, scheme: str) -> pd.DataFrame:
+    return frame[(frame["case"] == case) & (frame["scheme"] == scheme)].sort_values("t_s")
+
+
+#: inset boxes (axes fraction: x, y, width, height), tried in turn: upper left, lower right
+INSET_BOXES = ((0.1, 0.56, 0.4, 0.3), (0.55, 0.1, 0.4, 0.3))
+
+
+def _inset_box(ax) -> tuple[float, float, float, float]:
+    """The first inset box no drawn curve passes through (else the least crossed one)."""
+    ax.autoscale_view()
+    to_axes = ax.transData + ax.transAxes.inverted()
+    points = np.vstack([to_axes.transform(line.get_xydata()) for line in ax.lines])
+
+    def crossed(box):
+        x, y, w, h = box
+        inside = (points[:, 0] >= x) & (points[:, 0] <= x + w)
+        return int(np.sum(inside & (points[:, 1] >= y - 0.03) & (points[:, 1] <= y + h + 0.08)))
+
+    return min(INSET_BOXES, key=crossed)
+
+
+def _difference_inset(ax, frame: pd.DataFrame, case: str) -> None:
+    """Inset: simulated proposed minus strapdown error (m), where the two are drawn."""
+    sim, strap = _curve(frame, case, "proposed_simulated"), _curve(frame, case, "strapdown")
+    if sim.empty or strap.empty:
+        return
+    diff = sim["error_m"].to_numpy() - strap.set_index("t_s")["error_m"].reindex(sim["t_s"])
+    ins = ax.inset_axes(_inset_box(ax), zorder=6)
+    white = {"facecolor": "white", "edgecolor": "none", "pad": 1.0}
+    ins.axhline(0.0, color="tab:red", lw=1.0, alpha=0.8)
+    ins.plot(sim["t_s"], diff.to_numpy(), color=STYLE["proposed_simulated"]["color"], lw=1.2)
+    ins.set_title(
+        "proposed simulated - strapdown (m)",
+        fontsize=7,
+        pad=2,
+        bbox=white,
+    )
+    ins.set_xlabel("time (s)", fontsize=6, labelpad=1, bbox=white)
+    ins.tick_params(labelsize=6, pad=1)
+    ins.grid(alpha=0.3)
+
+
+def _panel(
+    ax, frame: pd.DataFrame, case: str, title: str, unit: str = "km", moving: bool = False
+) -> None:
+    scale = {"km": 1000.0, "um": 1e-6}[unit]
     for scheme, style in STYLE.items():
-        cur = frame[(frame["case"] == case) & (frame["scheme"] == scheme)]
+        cur = _curve(frame, case, scheme)
         if not cur.empty:
-            ax.plot(cur["t_s"], cur["error_m"] / 1000.0, **style)
+            style = (
+                {**style, "label": ANALYTIC_MOVING}
+                if moving and scheme == "proposed_analytic"
+                else style
+            )
+            ax.plot(cur["t_s"], cur["error_m"] / scale, **style)
     ax.set_title(title, fontsize=10)
     ax.set_xlabel("time (s)")
-    ax.set_ylabel("position error (km)")
+    ax.set_ylabel(f"position error ({'µm' if unit == 'um' else unit})")
     ax.grid(alpha=0.3)
 
 
@@ -113,10 +174,11 @@ def plot_scenario(
             ax1.grid(alpha=0.3)
             ax1.legend(fontsize=8)
     if not moving:
-        _panel(ax1, errors, "none", "(1) no error source")
+        _panel(ax1, errors, "none", "(1) no error source (integration floor)", unit="um")
     for ax, (case, text), k in zip(axes.flat[1:], CASES.items(), (2, 3, 4), strict=True):
-        _panel(ax, errors, case, f"({k}) {text}")
+        _panel(ax, errors, case, f"({k}) {text}", moving=moving)
         _published_marks(ax, [i for i in published if _panel_number(i) == (number, k)])
+        _difference_inset(ax, errors, case)
     legend: dict[str, Any] = {}
     for ax in axes.flat[1:]:
         for handle, text in zip(*ax.get_legend_handles_labels(), strict=True):
@@ -124,7 +186,7 @@ def plot_scenario(
     fig.legend(
         list(legend.values()), list(legend), loc="lower center", ncol=3, fontsize=9, frameon=False
     )
-    head = f"Fig. {number}" if number else "Figure"
+    head = f"Fig. {number} (reproduced)" if number else "Figure"
     fig.suptitle(f"{head}: position error, proposed scheme vs strapdown, {label}", fontsize=12)
     fig.tight_layout(rect=(0, 0.08, 1, 0.96))
     return fig

@@ -22,10 +22,13 @@ CITATION = (
 )
 
 _CURVES = (
-    "position error of the proposed scheme (analytic and simulated) and of the strapdown INS; "
-    "dashed: the proposed scheme with the true azimuth rate in eq. 16 (the part of the error "
-    "eqs. 33-36 model); black diamond and dotted line: the 2 h strapdown error and the "
-    "crossover time the paper's text gives for that panel (config/published/platform_drift.yaml)."
+    "position error of the proposed scheme (analytic eqs. 32/36 and nonlinear simulation) and "
+    "of the strapdown INS. The simulated proposed curve is drawn on top, dashed with open "
+    "markers: with a channel-3 drift it lies on the strapdown curve, and the inset gives their "
+    "difference in metres. Dotted grey: the proposed scheme with the true azimuth rate in eq. 16 "
+    "(the part of the error eqs. 33-36 model). Black diamond and dotted line: the 2 h strapdown "
+    "error and the crossover time the paper's text gives for that panel "
+    "(config/published/platform_drift.yaml)."
 )
 FIGURES = (
     FigureSpec("fig5_stationary.png", 5, f"(stationary vehicle): {_CURVES}"),
@@ -72,8 +75,11 @@ STEPS = (
         "pipeline.platform_drift.steps:verdicts",
         inputs=lambda ctx: {
             **ctx.published_inputs,
+            "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
+            "scenario_schema": SCENARIO_SCHEMA,
             "errors": ctx.per_scenario("errors.csv"),
             "errors_long": ctx.per_scenario("errors_long.csv"),
+            "diagnostic": ctx.per_scenario("errors_diagnostic.csv"),
         },
         outputs=lambda ctx: {"verdicts": f"{ctx.results}/verdicts.csv"},
         report={"verdicts": ("Verdicts", "verdicts")},

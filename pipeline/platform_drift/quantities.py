@@ -7,7 +7,10 @@ drift case and the curve the number is read off. Its quantity is
 * ``error_2h_m``: the strapdown error at 7200 s (one row);
 * ``crossover_s``: the first time after 300 s at which the strapdown error exceeds the
   proposed scheme's, computed against each proposed curve (analytic and simulated): one row
-  per curve, id suffix ``/<curve>``; "never" when the curves do not cross within the run.
+  per curve, id suffix ``/<curve>``; "never" when the curves do not cross within the run;
+  ``not_checkable`` for the analytic curve where its equations do not hold (a moving vehicle).
+
+A failing row carries its computed root cause where one applies (:mod:`causes`).
 
 Values are returned in the item's printed unit (km, m, s, h).
 """
@@ -15,13 +18,24 @@ Values are returned in the item's printed unit (km, m, s, h).
 from __future__ import annotations
 
 from collections.abc import Mapping
-from pathlib import Path
 from typing import Any
 
 import numpy as np
-import pandas as pd
 
+from pipeline.platform_drift import causes
 from pipeline.platform_drift.columns import DRIFT_CASES
+from pipeline.platform_drift.curves import (
+    CROSS_FROM_S,
+    CROSS_MARGIN_M,
+    FINAL_S,
+    FIT_WINDOW_S,
+    PROPOSED,
+    Results,
+    crossover,
+    curve,
+    read_results,
+)
+from pipeline.platform_drift.validity import analytic_invalid
 from pipeline.verdicts.kinds import Found
 from pipeline.verdicts.published import Problem
 
@@ -31,6 +45,7 @@ __all__ = [
     "FINAL_S",
     "FIT_WINDOW_S",
     "PROPOSED",
+    "Results",
     "UNITS",
     "check_item",
     "crossover",
@@ -39,17 +54,9 @@ __all__ = [
     "read_results",
 ]
 
-PROPOSED = ("proposed_analytic", "proposed_simulated")
 #: Metres (or seconds) per printed unit.
 UNITS = {"km": 1000.0, "m": 1.0, "s": 1.0, "h": 3600.0}
 QUANTITY_UNITS = {"error_2h_m": ("km", "m"), "crossover_s": ("s", "h")}
-FINAL_S = 7200.0
-CROSS_FROM_S = 300.0
-FIT_WINDOW_S = (1800.0, 7200.0)
-CROSS_MARGIN_M = 1.0
-
-#: results: scenario name -> {"errors": errors.csv, "errors_long": errors_long.csv if any}
-Results = Mapping[str, Mapping[str, pd.DataFrame]]
 
 
 def check_item(item: Mapping[str, Any]) -> list[Problem]:
@@ -76,52 +83,19 @@ def check_item(item: Mapping[str, Any]) -> list[Problem]:
     return problems
 
 
-def read_results(results_dir: str | Path) -> dict[str, dict[str, pd.DataFrame]]:
-    """errors.csv (and a non-empty errors_long.csv) of every scenario folder of results_dir."""
-    out: dict[str, dict[str, pd.DataFrame]] = {}
-    for d in sorted(Path(results_dir).iterdir()):
-        if (d / "errors.csv").is_file():
-            out[d.name] = {"errors": pd.read_csv(d / "errors.csv")}
-            long = d / "errors_long.csv"
-            if long.is_file() and not (frame := pd.read_csv(long)).empty:
-                out[d.name]["errors_long"] = frame
-    return out
-
-
-def curve(errors: pd.DataFrame, case: str, scheme: str) -> pd.Series:
-    """error_m of one case and scheme, indexed by t_s."""
-    rows = errors[(errors["case"] == case) & (errors["scheme"] == scheme)]
-    return rows.set_index("t_s")["error_m"].sort_index()
-
-
-def crossover(strapdown: pd.Series, proposed: pd.Series, from_s: float = CROSS_FROM_S) -> float:
-    """First t >= from_s at which strapdown > proposed (linear interpolation); NaN if never.
-
-    A 1 m margin: where the curves coincide (to integration precision) there is no crossover.
-
-    >>> t = np.arange(0.0, 1001.0, 100.0)
-    >>> crossover(pd.Series(t, index=t), pd.Series(np.full_like(t, 499.0), index=t))
-    500.0
-    """
-    t = strapdown.index.to_numpy(float)
-    d = (
-        strapdown.to_numpy(float)
-        - proposed.reindex(strapdown.index).to_numpy(float)
-        - CROSS_MARGIN_M
-    )
-    keep = t >= from_s
-    t, d = t[keep], d[keep]
-    if d.size == 0 or d[0] > 0:
-        return float("nan") if d.size == 0 else float(t[0])
-    idx = np.flatnonzero(d > 0)
-    if idx.size == 0:
-        return float("nan")
-    k = idx[0]
-    return float(t[k - 1] + (t[k] - t[k - 1]) * (-d[k - 1]) / (d[k] - d[k - 1]))
+def _cause_2h(item: Mapping[str, Any], errors, ours_m: float):
+    """The cause of a strapdown error at 2 h with both drifts (:func:`causes.combined_direction`)."""
+    if item["select"]["case"] != "ch1_ch3":
+        return None
+    return causes.combined_direction(errors, float(item["value"]) * UNITS[item["unit"]], ours_m)
 
 
 def locate(item: Mapping[str, Any], results: Results) -> list[Found]:
-    """What the results hold for one published item: one Found, or one per proposed curve."""
+    """What the results hold for one published item: one Found, or one per proposed curve.
+
+    A crossover with the analytic curve is not checkable where eqs. 32/36 do not hold (the
+    scenario's vehicle moves: :func:`pipeline.platform_drift.validity.analytic_invalid`).
+    """
     sel = item["select"]
     scale = UNITS[item["unit"]]
     errors = results.get(sel["scenario"], {}).get("errors")
@@ -131,16 +105,32 @@ def locate(item: Mapping[str, Any], results: Results) -> list[Found]:
     if item["quantity"] == "error_2h_m":
         if FINAL_S not in strap.index:
             return [Found(method="strapdown", missing=f"no strapdown error at {FINAL_S:g} s")]
-        return [Found(method="strapdown", value=float(strap.loc[FINAL_S]) / scale)]
+        ours = float(strap.loc[FINAL_S])
+        return [Found(method="strapdown", value=ours / scale, cause=_cause_2h(item, errors, ours))]
     out = []
     for p in PROPOSED:
+        method = f"strapdown vs {p}"
+        invalid = (
+            analytic_invalid(results, sel["scenario"], sel["case"])
+            if p == "proposed_analytic"
+            else ""
+        )
+        if invalid:
+            out.append(Found(method=method, suffix=p, missing=invalid))
+            continue
         t = crossover(strap, curve(errors, sel["case"], p))
+        cause = (
+            causes.explain_simulated(results, sel["scenario"], sel["case"])
+            if p == "proposed_simulated"
+            else None
+        )
         out.append(
             Found(
-                method=f"strapdown vs {p}",
+                method=method,
                 value=t / scale,
                 suffix=p,
                 shown=None if np.isfinite(t) else "never",
+                cause=cause,
             )
         )
     return out

@@ -86,7 +86,7 @@ def _summary(results: Path, audit: pd.DataFrame, verdicts: pd.DataFrame) -> list
                 "so the algorithm's azimuth drifts by b_g3 t and it resolves the Earth rate into "
                 "the wrong axes, exactly like a strapdown system with a drifting vertical gyro. "
                 "Eqs. 33-36 keep only the tilt-induced part of the error. Rerunning the "
-                "simulation with the true azimuth rate in eq. 16 (the dashed diagnostic curve, "
+                "simulation with the true azimuth rate in eq. 16 (the dotted grey diagnostic curve, "
                 f"{km('proposed_true_azimuth')}) reproduces eq. 36; the paper's bounded curve is "
                 "therefore that partial error, not the error of the algorithm it specifies."
             )

@@ -21,7 +21,8 @@ def verdicts(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) 
     from pipeline.platform_drift.verdicts import write_verdicts
 
     results = Path(inputs["errors"][0]).parents[1]
-    frame = write_verdicts(inputs["published"], results, outputs["verdicts"])
+    scenarios_dir = Path(inputs["scenario_files"][0]).parent
+    frame = write_verdicts(inputs["published"], results, outputs["verdicts"], scenarios_dir)
     log(frame["verdict"].value_counts().to_string())
 
 

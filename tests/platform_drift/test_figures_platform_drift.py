@@ -56,3 +56,29 @@ def test_no_published_values_no_marks(tmp_path):
             assert not [ln for ln in ax.lines if ln.get_label().startswith("published")]
     finally:
         plt.close(fig)
+
+
+def test_simulated_curve_drawn_visibly_on_the_strapdown_one(tmp_path):
+    """The finding must be visible: the simulated proposed curve is drawn after (on top of) the
+    strapdown one, dashed with markers, in its own colour; an inset gives their difference (m)."""
+    _errors(tmp_path)
+    fig = plot_scenario("stationary", tmp_path, None)
+    try:
+        for ax in fig.axes[1:4]:
+            lines = {ln.get_label(): ln for ln in ax.lines}
+            sim, strap = lines[STYLE["proposed_simulated"]["label"]], lines["strapdown"]
+            assert sim.get_zorder() > strap.get_zorder()
+            assert ax.lines.index(sim) > ax.lines.index(strap)
+            assert sim.get_linestyle() == "--" and sim.get_marker() == "o"
+            assert sim.get_color() != strap.get_color()
+            assert ax.get_ylabel() == "position error (km)" and ax.get_xlabel() == "time (s)"
+            (inset,) = ax.child_axes
+            assert inset.get_title().endswith("strapdown (m)")
+            diff = inset.lines[-1].get_ydata()
+            t = inset.lines[-1].get_xdata()
+            k_sim, k_strap = (list(STYLE).index(s) + 1 for s in ("proposed_simulated", "strapdown"))
+            np.testing.assert_allclose(diff, (k_sim - k_strap) * t)  # simulated - strapdown, m
+        assert fig.axes[0].get_ylabel() == "position error (µm)"
+        assert "Fig. 5 (reproduced)" in fig._suptitle.get_text()
+    finally:
+        plt.close(fig)
