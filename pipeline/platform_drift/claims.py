@@ -233,28 +233,38 @@ def closed_form(args: Mapping[str, Any], results: Results) -> list[ClaimResult]:
 
 @CLAIMS.register(
     "below",
-    _schema(["reference"], **_REFERENCE, from_s={"type": "number", "minimum": 0}),
+    _schema(
+        ["reference", "margin_m"],
+        **_REFERENCE,
+        from_s={"type": "number", "minimum": 0},
+        margin_m={"type": "number", "minimum": 0},
+    ),
 )
 def below(args: Mapping[str, Any], results: Results) -> list[ClaimResult]:
-    """The curve is below the reference at every t >= from_s."""
+    """The curve is below the reference by more than margin_m at every t >= from_s.
+
+    Two curves closer than ``margin_m`` are equal, not ordered: a claim that one scheme is
+    better is not upheld by a difference the integration cannot resolve.
+    """
     from_s = float(args.get("from_s", 0.0))
+    margin_m = float(args["margin_m"])
 
     def one(cur, table, scheme):
         ref = curve(table, args["case"], args["reference"]).reindex(cur.index)
         sel = cur.index >= from_s
         margin = ref[sel] - cur[sel]
-        bad = cur.index[sel][(margin <= 0).to_numpy()]
+        bad = cur.index[sel][(margin <= margin_m).to_numpy()]
         ok = bad.size == 0
+        smallest = (
+            f"smallest margin {float(margin.min()):.3g} m (at t = {float(margin.idxmin()):.0f} s)"
+        )
         if ok:
-            text = (
-                f"below the reference throughout; smallest margin {float(margin.min()):.3g} m "
-                f"(at t = {float(margin.idxmin()):.0f} s)"
-            )
+            text = f"below the reference by more than {margin_m:g} m throughout; {smallest}"
         else:
-            text = f"not below from t = {bad[0]:.0f} s"
+            text = f"not below the reference by more than {margin_m:g} m from t = {bad[0]:.0f} s; {smallest}"
         return ok, text, text
 
-    tol = f"{args.get('reference')} - curve > 0 at every t >= {from_s:g} s"
+    tol = f"{args.get('reference')} - curve > {margin_m:g} m at every t >= {from_s:g} s"
     return _judge("below", args, results, "main", tol, one)
 
 

@@ -161,7 +161,7 @@ def test_analytic_above_the_strapdown_early_explained_by_the_papers_own_crossove
         )
         return {"rest": {"errors": errors, "scenario": AT_REST}}
 
-    claim = _claim("C4", "below", scenario="rest", case="ch1_ch3", reference="strapdown", from_s=300)  # fmt: skip
+    claim = _claim("C4", "below", scenario="rest", case="ch1_ch3", reference="strapdown", from_s=300, margin_m=1.0)  # fmt: skip
     published = {"paper": "platform_drift", "items": [], "claims": [claim]}
     out = _table(published, results(ch1))
     row = out.loc["C4/proposed_analytic"]

@@ -186,7 +186,7 @@ def test_close_and_below():
     )
     claims = [
         _claim("close", scenario="st", case="ch1", reference="strapdown", rel_tol=0.1),
-        _claim("below", scenario="st", case="ch1", reference="strapdown", from_s=300),
+        _claim("below", scenario="st", case="ch1", reference="strapdown", from_s=300, margin_m=1.0),
     ]
     out = verdicts(_published(claims), _at_rest(errors)).set_index("id")["verdict"]
     assert out["C/proposed_analytic"] == "upheld" and out["C/proposed_simulated"] == "not_upheld"
@@ -195,6 +195,11 @@ def test_close_and_below():
     out = verdicts(_published(claims), _at_rest(errors)).set_index("id")
     assert out.loc["B/proposed_analytic", "verdict"] == "upheld"
     assert "smallest margin" in out.loc["B/proposed_analytic", "reproduced"]
+    # below by less than the margin everywhere: equal within the resolution, not "better"
+    errors.loc[errors["scheme"] == "proposed_analytic", "error_m"] = (100 + T) - 0.5
+    out = verdicts(_published(claims), _at_rest(errors)).set_index("id")
+    assert out.loc["B/proposed_analytic", "verdict"] == "not_upheld"
+    assert "by more than 1 m" in out.loc["B/proposed_analytic", "reproduced"]
 
 
 def test_close_to_an_oscillating_reference_relative_to_its_max():
