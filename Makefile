@@ -39,7 +39,7 @@ SYSTEM_TOOLS := /usr/bin/chromium /usr/bin/pdftoppm /usr/bin/pdftotext /usr/bin/
 SYSTEM_PKGS  := chromium poppler-utils
 REQUIRE_SYSTEM_DEPS ?= 0
 
-.PHONY: venv reproduce test lint bench lock clean check-python system-deps
+.PHONY: venv reproduce workflow test lint bench lock clean check-python system-deps
 
 venv: $(STAMP)
 
@@ -68,10 +68,25 @@ $(STAMP): environment.lock
 	$(VENV)/bin/pip install --no-input --require-hashes --no-build-isolation -r environment.lock
 	touch $@
 
+# One `make reproduce` at a time per checkout (flock); inside it, a Snakemake lock left by a
+# killed run is stale and is released, and the outputs a killed run left incomplete are rerun.
+SNAKEMAKE_RUN := PYTHONPATH=$(CURDIR) $(VENV)/bin/snakemake
+
 reproduce: $(STAMP)
-	PYTHONPATH=$(CURDIR) $(VENV)/bin/snakemake --cores $(CORES) \
+	@mkdir -p .snakemake
+	@flock -n -E 75 .snakemake/make-reproduce.lock $(MAKE) --no-print-directory workflow; \
+	status=$$?; if [ $$status -eq 75 ]; then \
+		echo "error: another 'make reproduce' is running in $(CURDIR); wait for it to finish" >&2; \
+	fi; exit $$status
+
+workflow:
+	@if [ -n "$$(ls -A .snakemake/locks 2>/dev/null)" ]; then \
+		echo "a Snakemake lock from an interrupted run is left: releasing it"; \
+		$(SNAKEMAKE_RUN) --unlock --quiet; \
+	fi
+	$(SNAKEMAKE_RUN) --cores $(CORES) --rerun-incomplete \
 		--rerun-triggers mtime params input code software-env --printshellcmds
-	PYTHONPATH=$(CURDIR) $(VENV)/bin/snakemake --report $(CURDIR)/reports/snakemake.html
+	$(SNAKEMAKE_RUN) --report $(CURDIR)/reports/snakemake.html
 
 system-deps:
 	@missing=""; for t in $(SYSTEM_TOOLS); do [ -x "$$t" ] || missing="$$missing $$t"; done; \

@@ -210,6 +210,10 @@ class Paper:
     #: symbol stems with a fixed rendering in the PDF's mathematics (stem -> Typst math
     #: source, e.g. ``{"xt": "tilde(x)"}``: a measured x)
     math_stems: Mapping[str, str] = field(default_factory=dict)
+    #: ``"module:function"``: ``function(path)`` validates the published file with the paper's
+    #: selectors and claim tests (raising ``ConfigError``); called when the workflow is parsed,
+    #: so a bad published file stops it before any job. Empty: validated by the verdict step only
+    load_published: str = ""
 
     def __post_init__(self) -> None:
         if not SLUG_PATTERN.match(self.slug):
@@ -253,6 +257,12 @@ class Paper:
     @property
     def figure_files(self) -> list[str]:
         return [f.file for f in self.figures]
+
+    def check_published(self, path: str | Path) -> None:
+        """Validate the published file with :attr:`load_published` (nothing if empty)."""
+        if self.load_published:
+            module, _, name = self.load_published.partition(":")
+            getattr(importlib.import_module(module), name)(path)
 
     def report_function(self) -> Callable[[Any], Any]:
         """The function ``report`` names (a function returning no sections if none)."""

@@ -26,6 +26,7 @@ __all__ = [
     "context",
     "load_paper",
     "load_papers",
+    "validate_published",
     "validate_scenarios",
     "validate_workflow_config",
 ]
@@ -104,6 +105,12 @@ def context(
         scenarios=scenarios,
         settings=dict(settings or {}),
     )
+
+
+def validate_published(paper: Paper, ctx: Context, root: Path = ROOT) -> None:
+    """The paper's published file validated when the workflow is parsed (its ConfigError names
+    the file, the field, the value and what is allowed), before any job."""
+    paper.check_published(root / ctx.published)
 
 
 def validate_scenarios(paper: Paper, names: Sequence[str], directory: str | Path) -> None:

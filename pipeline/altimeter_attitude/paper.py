@@ -161,5 +161,6 @@ PAPER = Paper(
     steps=STEPS,
     settings_schema="altimeter_attitude_config",
     report="pipeline.altimeter_attitude.report:report",
+    load_published="pipeline.altimeter_attitude.verdicts:load_published",
     math_stems=MATH_STEMS,
 )

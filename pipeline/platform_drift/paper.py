@@ -131,4 +131,5 @@ PAPER = Paper(
     steps=STEPS,
     notebook_inputs=lambda ctx: [f"{ctx.results}/{SWEEP_SCENARIO}/errors.csv"],
     report="pipeline.platform_drift.report:report",
+    load_published="pipeline.platform_drift.verdicts:load_published",
 )

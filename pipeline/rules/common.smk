@@ -17,6 +17,7 @@ from pipeline.config import ConfigError  # noqa: E402
 from pipeline.registry import (  # noqa: E402
     context,
     load_papers,
+    validate_published,
     validate_scenarios,
     validate_workflow_config,
 )
@@ -29,6 +30,7 @@ try:
     CONTEXTS = {slug: context(paper, config) for slug, paper in PAPERS.items()}
     for _slug, _paper in PAPERS.items():
         validate_scenarios(_paper, CONTEXTS[_slug].scenarios, CONTEXTS[_slug].scenarios_dir)
+        validate_published(_paper, CONTEXTS[_slug])
 except ConfigError as _error:
     # one clean message before any job, not Snakemake's stack frames
     sys.stderr.write(f"{_error}\n")

@@ -218,6 +218,16 @@ def test_snakemake_reports_a_bad_config_in_one_line_before_any_job(tmp_path):
     out = proc.stdout + proc.stderr
     assert proc.returncode == 1 and "bad.yml: file name ends in .yml" in out, out
     assert "Traceback" not in out and 'File "' not in out, out
+    scenario.unlink()
+    # a published file is validated when the workflow is parsed, not in its verdict job
+    published = repo / "config" / "published" / "platform_drift.yaml"
+    text = published.read_text(encoding="utf-8")
+    published.write_text(text.replace("kind: approximate", "kind: roughly", 1), encoding="utf-8")
+    proc = snakemake("-n", "--cores", "1", cwd=repo, timeout=300)
+    out = proc.stdout + proc.stderr
+    assert proc.returncode == 1 and "config/published/platform_drift.yaml" in out, out
+    assert "'roughly'" in out and "Traceback" not in out and 'File "' not in out, out
+    assert not (repo / "results").exists()
 
 
 def test_config_file_is_validated_from_a_path_snakemake_was_given(tmp_path):

@@ -70,4 +70,5 @@ PAPER = Paper(
     figures=FIGURES,
     steps=STEPS,
     report="pipeline.pendulum.report:report",
+    load_published="pipeline.pendulum.steps:load_published",
 )

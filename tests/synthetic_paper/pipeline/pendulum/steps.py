@@ -5,7 +5,17 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from pathlib import Path
 
-__all__ = ["simulate", "verdicts", "figures"]
+__all__ = ["load_published", "simulate", "verdicts", "figures"]
+
+
+def load_published(path: str | Path) -> dict:
+    """The published file validated with the pendulum's selectors and claim tests."""
+    from pipeline.pendulum.claims import CLAIMS
+    from pipeline.pendulum.quantities import check_item
+
+    from pipeline.verdicts.published import load_published as load
+
+    return load(path, claims=CLAIMS, check_item=check_item)
 
 
 def simulate(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
