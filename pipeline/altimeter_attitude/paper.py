@@ -67,7 +67,15 @@ PAPER_FIGURES = tuple(FigureSpec(f, _number(f), _caption(f)) for f in [*FIGURES,
 # --------------------------------------------------------------------------- workflow steps
 #: what the simulate step writes per scenario (results/altimeter_attitude/<scenario>/<name>.csv)
 SCENARIO_SCHEMA = "config/schemas/altimeter_attitude_scenario.schema.json"
-RESULT_CSVS = ("rms_summary", "noise_free", "run_rms", "timeseries", "truth")
+RESULT_CSVS = (
+    "rms_summary",
+    "noise_free",
+    "run_rms",
+    "timeseries",
+    "truth",
+    "window_summary",
+    "window_run_rms",
+)
 
 
 def _published(ctx: Context, name: str) -> str:

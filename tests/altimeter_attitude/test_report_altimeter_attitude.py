@@ -113,7 +113,7 @@ def _synthetic_verdicts() -> pd.DataFrame:
 
 def _synthetic_sweep(rng: np.random.Generator) -> pd.DataFrame:
     rows = [
-        (p, v, f, *rng.uniform(0.3, 2.0, 2), 25)
+        (p, v, f, *rng.uniform(0.3, 2.0, 2), 25, *rng.uniform(0.2, 0.6, 2), 140.0)
         for p, vals in (("imu_rate_hz", (25, 50, 100)), ("initial_error_deg", (0.5, 2, 5)))
         for v in vals
         for f in ("linear_kf", "ukf")
