@@ -122,6 +122,7 @@ STEPS = (
             "scenario": ctx.scenario_file(ctx.settings["published_scenario"]),
             "scenario_schema": SCENARIO_SCHEMA,
             "results": [_published(ctx, f"{n}.csv") for n in RESULT_CSVS],
+            "sweep": f"{ctx.results}/sweep.csv",
         },
         outputs=lambda ctx: {"verdicts": f"{ctx.results}/verdicts.csv"},
         report={"verdicts": ("Verdicts", "verdicts")},
@@ -150,6 +151,7 @@ STEPS = (
     page_step(
         lambda ctx: {
             "summaries": ctx.per_scenario("rms_summary.csv"),
+            "windows": ctx.per_scenario("window_summary.csv"),
             "noise_free": ctx.per_scenario("noise_free.csv"),
             "provenance": ctx.per_scenario("provenance.json"),
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
