@@ -2,12 +2,15 @@
 
 Each is judged on the published scenario's results (:class:`ScenarioResults`), both angles:
 
-* ``less_rms``: per-run mean squares of filter and reference, paired one-sided t-test for each
-  angle; upheld if both angles are smaller with p < alpha;
-* ``nees_consistent``: for each angle, the flight-mean NEES inside the two-sided chi-square
-  interval (p) of a mean over n_runs samples, and the NEES at each time after the transient
-  outside that interval for at most ``max_outside`` of the samples (the fractions above,
-  over-confident, and below, under-confident, are reported);
+* ``less_rms``: per-run mean squares of filter and reference over each of ``windows``
+  (default the flight; one row per window, suffix its name, when given), paired one-sided
+  t-test for each angle; upheld if both angles are smaller with p < alpha;
+* ``nees_consistent``: one row per angle (suffix ``roll``/``pitch``): the flight-mean NEES
+  inside the two-sided chi-square band (p) of a mean over n_runs samples, and the NEES at each
+  time after the transient outside that band for at most ``max_outside`` of the samples; a
+  failing row says whether the filter is over-confident (NEES above the band: sigma too small)
+  or under-confident (below: sigma too large), with the band
+  (:mod:`pipeline.altimeter_attitude.consistency`);
 * ``bounded``: RMS over the last quarter of the flight / RMS over its second quarter <=
   growth_ratio for both angles; the same test on the reference (an unbounded solution,
   gyro-only): if the reference passes too, the flight is too short to tell a bounded error
@@ -19,6 +22,9 @@ Each is judged on the published scenario's results (:class:`ScenarioResults`), b
 * ``diverges``: RMS over the last tenth non-finite or >= ratio x the reference's;
 * ``term_matters``: relative change of the RMS error or of the sigma from reference to filter
   >= rel_change for some angle.
+
+Failing rows carry their root cause where the results explain it
+(:mod:`pipeline.altimeter_attitude.causes`).
 """
 
 from __future__ import annotations
@@ -30,9 +36,11 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from pipeline.altimeter_attitude.columns import ALTIMETER_FILTERS
-from pipeline.altimeter_attitude.metrics import nees_bounds
+from pipeline.altimeter_attitude import causes
+from pipeline.altimeter_attitude.columns import ALTIMETER_FILTERS, WINDOWS
+from pipeline.altimeter_attitude.consistency import DIRECTIONS, NeesCheck, nees_check
 from pipeline.altimeter_attitude.quantities import ANGLES, ScenarioResults
+from pipeline.verdicts.cause import Cause
 from pipeline.verdicts.claims import ClaimRegistry, ClaimResult
 
 __all__ = ["CLAIMS"]
@@ -53,6 +61,10 @@ def _schema(required: list[str], **props: Any) -> dict[str, Any]:
     }
 
 
+def _verdict(ok: bool | str) -> str:
+    return ok if isinstance(ok, str) else ("upheld" if ok else "not_upheld")
+
+
 def _result(
     name: str,
     args: Mapping[str, Any],
@@ -61,10 +73,14 @@ def _result(
     text: str,
     tol: str,
     reason: str,
+    cause: Cause | None = None,
 ) -> list[ClaimResult]:
     """One ClaimResult: ``ok`` True/False, or a verdict word (not_checkable)."""
-    verdict = ok if isinstance(ok, str) else ("upheld" if ok else "not_upheld")
-    return [ClaimResult(verdict, text, tol, reason, method=args["filter"], quantity=name)]
+    return [
+        ClaimResult(
+            _verdict(ok), text, tol, reason, method=args["filter"], quantity=name, cause=cause
+        )
+    ]
 
 
 def _need(args: Mapping[str, Any], res: ScenarioResults, name: str) -> None:
@@ -83,24 +99,92 @@ def _quarters(curve: pd.Series, start: float) -> tuple[float, float]:
     return float(np.sqrt(np.mean(q2**2))), float(np.sqrt(np.mean(q4**2)))
 
 
-@CLAIMS.register("less_rms", _schema(["reference", "alpha"], reference=_FILTER, alpha=_FRACTION))
+_WINDOW_LIST = {"type": "array", "items": {"enum": list(WINDOWS)}, "minItems": 1}
+
+
+@CLAIMS.register(
+    "less_rms",
+    _schema(["reference", "alpha"], reference=_FILTER, alpha=_FRACTION, windows=_WINDOW_LIST),
+)
 def less_rms(args: Mapping[str, Any], res: ScenarioResults) -> list[ClaimResult]:
-    """The filter's RMS is below the reference's for both angles (paired one-sided t-test)."""
+    """The filter's RMS is below the reference's for both angles (paired one-sided t-test),
+    over each window."""
     from scipy.stats import ttest_rel
 
     _need(args, res, "less_rms")
     filt, ref = args["filter"], args["reference"]
-    parts, ok = [], True
-    for a in ANGLES:
-        x, y = res.per_run(filt, a) ** 2, res.per_run(ref, a) ** 2
-        p = float(ttest_rel(x, y, alternative="less").pvalue)
-        rx, ry = math.sqrt(x.mean()), math.sqrt(y.mean())
-        ok &= rx < ry and p < args["alpha"]
-        parts.append(f"{a}: {rx:.3f} vs {ry:.3f} deg (paired one-sided p = {p:.2g})")
-    text = f"{filt} vs {ref}: " + "; ".join(parts)
-    tol = f"both angles smaller with a paired one-sided p < {args['alpha']}"
-    why = "both angles smaller and significant" if ok else "not both angles smaller at that level"
-    return _result("less_rms", args, res, ok, text, tol, why)
+    windows = args.get("windows")
+    out = []
+    for window in windows or ["flight"]:
+        start = float(res.window(filt, window)["t_start_s"])
+        tol = f"both angles smaller with a paired one-sided p < {args['alpha']}"
+        if not math.isfinite(start):
+            why = f"the scenario has no {window} window"
+            out.append(
+                ClaimResult(
+                    "not_checkable",
+                    why,
+                    tol,
+                    why,
+                    filt,
+                    "less_rms",
+                    suffix=window if windows else "",
+                )
+            )
+            continue
+        parts, ok = [], True
+        for a in ANGLES:
+            x, y = res.per_run(filt, a, window) ** 2, res.per_run(ref, a, window) ** 2
+            p = float(ttest_rel(x, y, alternative="less").pvalue)
+            rx, ry = math.sqrt(x.mean()), math.sqrt(y.mean())
+            ok &= rx < ry and p < args["alpha"]
+            parts.append(f"{a}: {rx:.3f} vs {ry:.3f} deg (paired one-sided p = {p:.2g})")
+        end = float(res.window(filt, window)["t_end_s"])
+        text = f"{filt} vs {ref} over the {window} window {start:.5g}-{end:.5g} s: " + "; ".join(
+            parts
+        )
+        why = (
+            "both angles smaller and significant" if ok else "not both angles smaller at that level"
+        )
+        out.append(
+            ClaimResult(
+                _verdict(ok),
+                text,
+                tol,
+                why,
+                method=filt,
+                quantity="less_rms",
+                suffix=window if windows else "",
+                cause=None if ok else causes.ranking_cause(res, filt, ref),
+            )
+        )
+    return out
+
+
+def _nees_args(args: Mapping[str, Any]) -> tuple[float, float]:
+    return float(args["p"]), float(args.get("max_outside", 1.0))
+
+
+def _nees_checks(res: ScenarioResults) -> list[NeesCheck]:
+    """Every filter and angle the published nees_consistent claims judge (for shared causes)."""
+    out = []
+    for claim in res.published.get("claims", []):
+        pred = claim.get("predicate", {})
+        if pred.get("test") == "nees_consistent" and pred.get("filter") in res.summary.index:
+            p, max_outside = _nees_args(pred)
+            out += [nees_check(res, pred["filter"], a, p, max_outside) for a in ANGLES]
+    return out
+
+
+def _nees_cause(res: ScenarioResults, check: NeesCheck) -> Cause | None:
+    if check.direction == "over-confident":
+        return causes.bias_cause(res, check)
+    if check.angle == "roll":
+        same = [
+            c for c in _nees_checks(res) if c.angle == "roll" and c.direction == check.direction
+        ]
+        return causes.level_flight_cause(res, same or [check])
+    return None
 
 
 @CLAIMS.register(
@@ -108,33 +192,42 @@ def less_rms(args: Mapping[str, Any], res: ScenarioResults) -> list[ClaimResult]
     _schema(["p"], p=_FRACTION, max_outside={"type": "number", "minimum": 0, "maximum": 1}),
 )
 def nees_consistent(args: Mapping[str, Any], res: ScenarioResults) -> list[ClaimResult]:
-    """The filter's NEES is consistent: flight mean inside, per-time rarely outside the interval."""
+    """The filter's NEES is consistent, per angle: flight mean inside, per-time rarely outside
+    the chi-square band; else over- or under-confident."""
     _need(args, res, "nees_consistent")
     filt = args["filter"]
-    n = int(res.summary.loc[filt, "n_runs"])
-    lo, hi = nees_bounds(n, p=args["p"])
-    max_outside = float(args.get("max_outside", 1.0))
-    parts, ok, failed = [], True, []
+    p, max_outside = _nees_args(args)
+    out = []
     for a in ANGLES:
-        mean = float(res.summary.loc[filt, f"nees_{a}"])
-        per_time = res.curve(filt, f"nees_{a}")
-        per_time = per_time[per_time.index >= res.transient].to_numpy(float)
-        above, below = float(np.mean(per_time > hi)), float(np.mean(per_time < lo))
-        good = lo <= mean <= hi and above + below <= max_outside
-        ok &= good
-        if not good:
-            failed.append(f"{a} ({above:.0%} over-confident, {below:.0%} under-confident)")
-        parts.append(
-            f"NEES {a}: flight mean {mean:.2f}, per time above the interval {above:.0%} "
-            f"(over-confident) and below {below:.0%} of {len(per_time)} samples"
+        c = nees_check(res, filt, a, p, max_outside)
+        lo, hi = c.band
+        text = (
+            f"NEES {a}: flight mean {c.mean:.2f}; at {c.above:.0%} of {c.n_times} times above "
+            f"the band (over-confident), at {c.below:.0%} below it (under-confident); "
+            f"steady-window mean {c.steady_mean:.2f}"
         )
-    text = "; ".join(parts)
-    tol = (
-        f"flight-mean NEES in the {args['p']:.0%} interval for a mean over {n} runs "
-        f"[{lo:.2f}, {hi:.2f}] and at most {max_outside:.0%} of the times outside it"
-    )
-    why = "both angles inside" if ok else "outside for " + ", ".join(failed)
-    return _result("nees_consistent", args, res, ok, text, tol, why)
+        tol = (
+            f"chi-square band of a mean over {c.n_runs} runs, {p:.0%} two-sided: "
+            f"[{lo:.2f}, {hi:.2f}]; flight mean inside it and at most {max_outside:.0%} of the "
+            "times outside it"
+        )
+        if c.ok:
+            why = f"{a} consistent"
+        else:
+            why = f"{a} {c.direction} ({DIRECTIONS[c.direction]})"
+        out.append(
+            ClaimResult(
+                "upheld" if c.ok else "not_upheld",
+                text,
+                tol,
+                why,
+                method=filt,
+                quantity=f"nees_{a}",
+                suffix=a,
+                cause=None if c.ok else _nees_cause(res, c),
+            )
+        )
+    return out
 
 
 @CLAIMS.register(
@@ -221,18 +314,20 @@ def diverges(args: Mapping[str, Any], res: ScenarioResults) -> list[ClaimResult]
     """Over the last tenth the filter's RMS is not finite or >= ratio x the reference's."""
     _need(args, res, "diverges")
     filt, ref = args["filter"], args["reference"]
-    parts, ok = [], False
+    parts, ok, tail = [], False, {}
     for a in ANGLES:
         f_c, r_c = res.curve(filt, f"{a}_rms_deg"), res.curve(ref, f"{a}_rms_deg")
-        tail = f_c.index >= 0.9 * float(f_c.index.max())
-        fe = float(np.sqrt(np.mean(f_c[tail] ** 2)))
-        re_ = float(np.sqrt(np.mean(r_c[tail] ** 2)))
+        last = f_c.index >= 0.9 * float(f_c.index.max())
+        fe = float(np.sqrt(np.mean(f_c[last] ** 2)))
+        re_ = float(np.sqrt(np.mean(r_c[last] ** 2)))
         ok |= (not np.isfinite(fe)) or fe >= args["ratio"] * re_
+        tail[a] = (fe, re_)
         parts.append(f"{a}: {fe:.3f} vs {re_:.3f} deg ({ref}) over the last tenth")
     text = "; ".join(parts) + f" (diverged if >= {args['ratio']:g}x or not finite)"
     tol = f"last-tenth RMS >= {args['ratio']:g} x {ref}'s or not finite, some angle"
     why = "diverged" if ok else "stays within the ratio of the reference"
-    return _result("diverges", args, res, ok, text, tol, why)
+    cause = None if ok else causes.ekf_cause(res, filt, ref, tail)
+    return _result("diverges", args, res, ok, text, tol, why, cause)
 
 
 @CLAIMS.register(

@@ -27,6 +27,14 @@ ALTIMETER_FILTERS = (
 # results/<slug>/<scenario>/run_rms.csv: per Monte Carlo run and filter, the RMS
 # over time (after the transient) of the roll and pitch errors (paired comparisons of filters)
 RUN_RMS_COLUMNS = ["run", "filter", "roll_rms_deg", "pitch_rms_deg"]
+# results/<slug>/<scenario>/window_summary.csv: the rms_summary.csv statistics over each
+# averaging window (pipeline/altimeter_attitude/windows.py): "flight" (after the transient, as
+# rms_summary.csv) and "steady" (after the first bank that makes roll observable); start and
+# end in s, NaN statistics when the scenario has no such window
+WINDOWS = ("flight", "steady")
+WINDOW_SUMMARY_COLUMNS = ["window", "t_start_s", "t_end_s", *RMS_SUMMARY_COLUMNS]
+# results/<slug>/<scenario>/window_run_rms.csv: run_rms.csv over each averaging window
+WINDOW_RUN_RMS_COLUMNS = ["window", *RUN_RMS_COLUMNS]
 # results/<slug>/<scenario>/timeseries.csv: per filter and output time, RMS over
 # runs of the errors, of the filter's sigma, and of the normalisation error 1 - c^T c
 TIMESERIES_COLUMNS = [
@@ -64,8 +72,19 @@ TRUTH_COLUMNS = [
     "accel_z_m_s2",
     "altimeter_m",
 ]
-# results/<slug>/sweep.csv: one-at-a-time sweep around the paper scenario
-SWEEP_COLUMNS = ["parameter", "value", "filter", "roll_rms_deg", "pitch_rms_deg", "n_runs"]
+# results/<slug>/sweep.csv: one-at-a-time sweep around the paper scenario; the RMS over the
+# flight after the transient, then (added later, at the end) over the steady window and its start
+SWEEP_COLUMNS = [
+    "parameter",
+    "value",
+    "filter",
+    "roll_rms_deg",
+    "pitch_rms_deg",
+    "n_runs",
+    "steady_roll_rms_deg",
+    "steady_pitch_rms_deg",
+    "steady_start_s",
+]
 # flight-log CLI output: estimated attitude per IMU sample
 FLIGHTLOG_OUTPUT_COLUMNS = [
     "t_s",

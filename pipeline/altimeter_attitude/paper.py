@@ -67,7 +67,15 @@ PAPER_FIGURES = tuple(FigureSpec(f, _number(f), _caption(f)) for f in [*FIGURES,
 # --------------------------------------------------------------------------- workflow steps
 #: what the simulate step writes per scenario (results/altimeter_attitude/<scenario>/<name>.csv)
 SCENARIO_SCHEMA = "config/schemas/altimeter_attitude_scenario.schema.json"
-RESULT_CSVS = ("rms_summary", "noise_free", "run_rms", "timeseries", "truth")
+RESULT_CSVS = (
+    "rms_summary",
+    "noise_free",
+    "run_rms",
+    "timeseries",
+    "truth",
+    "window_summary",
+    "window_run_rms",
+)
 
 
 def _published(ctx: Context, name: str) -> str:
@@ -114,6 +122,7 @@ STEPS = (
             "scenario": ctx.scenario_file(ctx.settings["published_scenario"]),
             "scenario_schema": SCENARIO_SCHEMA,
             "results": [_published(ctx, f"{n}.csv") for n in RESULT_CSVS],
+            "sweep": f"{ctx.results}/sweep.csv",
         },
         outputs=lambda ctx: {"verdicts": f"{ctx.results}/verdicts.csv"},
         report={"verdicts": ("Verdicts", "verdicts")},
@@ -142,6 +151,7 @@ STEPS = (
     page_step(
         lambda ctx: {
             "summaries": ctx.per_scenario("rms_summary.csv"),
+            "windows": ctx.per_scenario("window_summary.csv"),
             "noise_free": ctx.per_scenario("noise_free.csv"),
             "provenance": ctx.per_scenario("provenance.json"),
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],

@@ -5,8 +5,9 @@ beyond the paper, assumptions and provenance.
 Inputs (:class:`~pipeline.report.model.ReportInputs`; ``results/altimeter_attitude/``):
 
 * ``verdicts.csv`` (required), ``equation_audit.csv`` (shown as "not available" if absent);
-* ``<scenario>/rms_summary.csv``, ``<scenario>/noise_free.csv`` and
-  ``<scenario>/provenance.json`` of every scenario folder holding an rms_summary.csv;
+* ``<scenario>/rms_summary.csv``, ``<scenario>/noise_free.csv``,
+  ``<scenario>/window_summary.csv`` (optional) and ``<scenario>/provenance.json`` of every
+  scenario folder holding an rms_summary.csv;
 * ``sweep.csv`` (the one-at-a-time sensitivity sweep);
 * ``figures/*.png`` (``PAPER.figures``; a missing figure is shown as "not available");
 * the scenario files ``config/scenarios/altimeter_attitude/*.yaml`` (description, decisions);
@@ -29,6 +30,7 @@ from pipeline.altimeter_attitude.columns import (
     ALTIMETER_FILTERS,
     RMS_SUMMARY_COLUMNS,
     SWEEP_COLUMNS,
+    WINDOW_SUMMARY_COLUMNS,
 )
 from pipeline.altimeter_attitude.paper import PAPER
 from pipeline.altimeter_attitude.report_findings import (
@@ -38,7 +40,7 @@ from pipeline.altimeter_attitude.report_findings import (
     fmt3,
     sweep_table,
 )
-from pipeline.altimeter_attitude.report_summary import summary_blocks
+from pipeline.altimeter_attitude.report_summary import steady_blocks, summary_blocks
 from pipeline.altimeter_attitude.scenario import load_scenario
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
@@ -124,13 +126,25 @@ def _audit(audit: pd.DataFrame | None, path: str) -> list[Block]:
     return blocks
 
 
+#: the root-cause columns of verdicts.csv (the summary lists each cause once with its rows)
+CAUSE = ("cause_kind", "cause")
+
+
 def _verdicts(verdicts: pd.DataFrame) -> Section:
-    values = verdicts[verdicts["kind"] != "claim"]
-    claims = verdicts[verdicts["kind"] == "claim"]
+    shown = verdicts.drop(columns=[c for c in ("cause",) if c in verdicts.columns])
+    values = shown[shown["kind"] != "claim"]
+    claims = shown[shown["kind"] == "claim"]
     intro = Paragraph(
-        "Values: the paper's approximate RMS errors against rms_summary.csv of the published "
-        "scenario (tolerance and Monte Carlo standard error in the note). Claims: a predicate "
-        "over the results; the reproduced column is its computed evidence."
+        "Values: the paper's approximate RMS errors against ours over two windows of the "
+        "published scenario (window_summary.csv), rows /flight (after the transient) and "
+        "/steady (after the first bank that makes roll observable); tolerance and Monte Carlo "
+        "standard error in the tolerance and note columns. Claims: a predicate over the "
+        "results; the reproduced column is its computed evidence. The sigma-consistency claims "
+        "have one row per angle: NEES above the chi-square band means the filter's sigma is "
+        "too small (over-confident), below it too large (under-confident). The cause_kind "
+        "column gives the kind of a failing row's root cause (the Summary states each cause "
+        "once, with its rows); 'unpublished' means it cannot be reproduced from what the paper "
+        "publishes, which does not refute it."
     )
     return Section(
         "verdicts",
@@ -144,7 +158,10 @@ def _verdicts(verdicts: pd.DataFrame) -> Section:
 
 
 def _results(
-    summaries: Mapping[str, pd.DataFrame], descriptions: Mapping[str, str], published: str
+    summaries: Mapping[str, pd.DataFrame],
+    descriptions: Mapping[str, str],
+    published: str,
+    windows: Mapping[str, pd.DataFrame] | None = None,
 ) -> Section:
     blocks: list[Block] = [
         Paragraph(
@@ -166,6 +183,7 @@ def _results(
         fmts["n_runs"] = lambda x: DASH if pd.isna(x) else str(int(x))
         inner: list[Block] = [Paragraph(descriptions[name])] if descriptions.get(name) else []
         inner.append(frame_table(s, formatters=fmts))
+        inner += steady_blocks((windows or {}).get(name))
         if missing:
             inner.append(Paragraph(f"Filters without results: {', '.join(missing)}."))
         title = f"Scenario {name}" + (" (published scenario)" if name == published else "")
@@ -295,7 +313,9 @@ def report(inputs: ReportInputs) -> PaperReport:
     sweep_path = results / "sweep.csv"
     summary_paths = sorted(results.glob("*/rms_summary.csv"))
     audit = _read(audit_path, AUDIT_COLUMNS, as_text=True)
-    verdicts = _read(verdicts_path, VERDICT_COLUMNS, as_text=True, optional=VERDICT_EXTRA_COLUMNS)
+    verdicts = _read(
+        verdicts_path, VERDICT_COLUMNS, as_text=True, optional=(*VERDICT_EXTRA_COLUMNS, *CAUSE)
+    )
     if verdicts is None:
         raise FileNotFoundError(f"{verdicts_path}: required input is missing")
     sweep = _read(sweep_path, SWEEP_COLUMNS)
@@ -305,6 +325,11 @@ def report(inputs: ReportInputs) -> PaperReport:
     order = sorted(by_name, key=lambda n: (n != published_scenario, n))
     sums = {n: by_name[n] for n in order}
     dirs = {n: results / n for n in order}
+    windows = {
+        p.parent.name: df
+        for p in summary_paths
+        if (df := _read(p.parent / "window_summary.csv", WINDOW_SUMMARY_COLUMNS)) is not None
+    }
     noise_free = {  # in file order (the published scenario is not moved first here)
         p.parent.name: df
         for p in summary_paths
@@ -316,17 +341,25 @@ def report(inputs: ReportInputs) -> PaperReport:
     file_by_name = {f.stem: f for f in files}
     descriptions = {f.stem: str(load_scenario(f).raw.get("description", "")).strip() for f in files}
     sections = [
-        Section("summary", "Summary", summary_blocks(audit, verdicts, sums, published_scenario)),
+        Section(
+            "summary", "Summary", summary_blocks(audit, verdicts, sums, published_scenario, windows)
+        ),
         Section("equation-audit", "Equation audit", _audit(audit, inputs.shown(audit_path))),
         _verdicts(verdicts),
-        _results(sums, descriptions, published_scenario),
+        _results(sums, descriptions, published_scenario, windows),
         _figures(inputs.figures, sweep),
         findings_section(sums, sweep, noise_free),
         _assumptions(files, inputs.shown),
         _provenance(
             dirs,
             file_by_name,
-            [audit_path, verdicts_path, *summary_paths, sweep_path],
+            [
+                audit_path,
+                verdicts_path,
+                *summary_paths,
+                *(p.parent / "window_summary.csv" for p in summary_paths),
+                sweep_path,
+            ],
             inputs.shown,
         ),
     ]

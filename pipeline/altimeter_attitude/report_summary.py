@@ -1,6 +1,7 @@
 """The altimeter_attitude summary: what the paper does, the counts of the equation audit and
-the verdicts, the headline comparison of the published RMS errors with ours (rms_summary.csv
-of the published scenario) and the claims not upheld."""
+the verdicts, the headline comparison of the published RMS errors with ours per averaging
+window (window_summary.csv of the published scenario; rms_summary.csv for the flight when it
+is absent), the claims not upheld, and the failing rows grouped by root cause."""
 
 from __future__ import annotations
 
@@ -10,12 +11,14 @@ from typing import Any
 
 import pandas as pd
 
+from pipeline.altimeter_attitude.columns import RMS_SUMMARY_COLUMNS, WINDOWS
 from pipeline.altimeter_attitude.filter_comparison import ANGLES
-from pipeline.altimeter_attitude.report_findings import fmt3, fmt_ratio
+from pipeline.altimeter_attitude.report_findings import DASH, filter_order, fmt3, fmt_ratio
 from pipeline.columns import AUDIT_STATUSES
 from pipeline.report.model import Block, Bullets, Paragraph, frame_table, not_available
+from pipeline.verdicts.kinds import NUMBER_VERDICTS
 
-__all__ = ["CLAIM_WORDS", "VALUE_WORDS", "group_counts", "summary_blocks"]
+__all__ = ["CLAIM_WORDS", "VALUE_WORDS", "group_counts", "steady_blocks", "summary_blocks"]
 
 VALUE_WORDS = ("reproduced", "consistent", "not_reproduced")
 CLAIM_WORDS = ("upheld", "not_upheld", "not_checkable")
@@ -30,9 +33,11 @@ def group_counts(frame: pd.DataFrame, column: str, words: Sequence[str]) -> pd.S
 
 
 def _value_words(values: pd.DataFrame) -> list[str]:
-    # 'reproduced' applies to exact values only; show it when the paper has any
-    has_exact = (values["kind"] == "exact").any() or (values["verdict"] == "reproduced").any()
-    return [w for w in VALUE_WORDS if has_exact or w != "reproduced"]
+    """The verdict words of the kinds present (pipeline.verdicts.kinds.NUMBER_VERDICTS:
+    'consistent' is the statistical kind's, 'reproduced' the exact and approximate kinds')."""
+    allowed = {w for k in set(values["kind"]) for w in NUMBER_VERDICTS.get(k, ())}
+    allowed |= set(values["verdict"])
+    return [w for w in VALUE_WORDS if w in allowed]
 
 
 def _spelled(counts: pd.Series) -> str:
@@ -49,7 +54,46 @@ def _finite(text: Any) -> bool:
 # --------------------------------------------------------------------------- sections
 
 
-def _headline(verdicts: pd.DataFrame, summary: pd.DataFrame | None, scenario: str) -> list[Block]:
+def _window_of(row_id: str) -> str:
+    """The averaging window of a value row (its id suffix; ``flight`` without one)."""
+    tail = row_id.rsplit("/", 1)[-1] if "/" in row_id else ""
+    return tail if tail in WINDOWS else "flight"
+
+
+def _ours(
+    summary: pd.DataFrame, windows: pd.DataFrame | None, filt: str, quantity: str, window: str
+) -> float:
+    """Our value of a filter and quantity over a window (window_summary.csv; the flight
+    window falls back on rms_summary.csv)."""
+    if windows is not None:
+        rows = windows[(windows["window"] == window) & (windows["filter"] == filt)]
+        if len(rows) == 1 and quantity in rows.columns:
+            return float(rows.iloc[0][quantity])
+    if window == "flight" and filt in summary.index and quantity in summary.columns:
+        return float(summary.at[filt, quantity])
+    return float("nan")
+
+
+def _window_text(windows: pd.DataFrame | None) -> str:
+    if windows is None:
+        return ""
+    parts = []
+    for w in WINDOWS:
+        rows = windows[windows["window"] == w]
+        if len(rows) and math.isfinite(float(rows.iloc[0]["t_start_s"])):
+            r = rows.iloc[0]
+            parts.append(f"{w} {float(r['t_start_s']):.5g}-{float(r['t_end_s']):.5g} s")
+        elif len(rows):
+            parts.append(f"{w}: none in this scenario")
+    return " Windows (window_summary.csv): " + ", ".join(parts) + "." if parts else ""
+
+
+def _headline(
+    verdicts: pd.DataFrame,
+    summary: pd.DataFrame | None,
+    scenario: str,
+    windows: pd.DataFrame | None = None,
+) -> list[Block]:
     values = verdicts[verdicts["kind"] != "claim"]
     if values.empty:
         return [not_available("Published values in verdicts.csv")]
@@ -58,11 +102,8 @@ def _headline(verdicts: pd.DataFrame, summary: pd.DataFrame | None, scenario: st
     s = summary.set_index("filter")
     rows = []
     for r in values.itertuples():
-        ours = (
-            float(s.at[r.method, r.quantity])
-            if r.method in s.index and r.quantity in s.columns
-            else float("nan")
-        )
+        window = _window_of(r.id)
+        ours = _ours(s, windows, r.method, r.quantity, window)
         try:
             pub = float(r.published)
         except ValueError:
@@ -71,6 +112,7 @@ def _headline(verdicts: pd.DataFrame, summary: pd.DataFrame | None, scenario: st
             {
                 "id": r.id,
                 "filter": r.method,
+                "window": window,
                 "quantity": r.quantity,
                 "published": r.published,
                 "ours": ours,
@@ -81,7 +123,7 @@ def _headline(verdicts: pd.DataFrame, summary: pd.DataFrame | None, scenario: st
         )
     table = pd.DataFrame(rows)
     parts = []
-    for filt, g in table.groupby("filter", sort=False):
+    for (filt, window), g in table.groupby(["filter", "window"], sort=False):
         by_q = g.set_index("quantity")
         qs = [q for q in (f"{a}_rms_deg" for a in ANGLES) if q in by_q.index]
         if not qs:
@@ -92,17 +134,19 @@ def _headline(verdicts: pd.DataFrame, summary: pd.DataFrame | None, scenario: st
         ratios = [float(by_q.at[q, "ours / published"]) for q in qs]
         ratio = "–".join(dict.fromkeys(fmt_ratio(x, 1) for x in (min(ratios), max(ratios))))
         parts.append(
-            f"{filt} {names} RMS {ours} deg (paper: {pub} deg; ours is {ratio} times the paper's)"
+            f"{filt} {names} RMS over the {window} window {ours} deg (paper: {pub} deg; ours is "
+            f"{ratio} times the paper's)"
         )
     text = (
-        f"Headline comparison, published scenario {scenario} (rms_summary.csv): "
+        f"Headline comparison, published scenario {scenario}: "
         + "; ".join(parts)
         + "."
+        + _window_text(windows)
     )
     n_runs = s["n_runs"].dropna().unique() if "n_runs" in s.columns else []
     if len(n_runs):
         text += f" Monte Carlo runs per filter: {', '.join(str(int(n)) for n in n_runs)}."
-    # the verdicts must have been computed from these rms_summary values
+    # the verdicts must have been computed from these results
     stale = [
         r["id"]
         for r in rows
@@ -116,13 +160,13 @@ def _headline(verdicts: pd.DataFrame, summary: pd.DataFrame | None, scenario: st
             table,
             status="verdict",
             formatters={"ours": fmt3, "ours / published": fmt_ratio},
-            caption="Published RMS errors (Sec. 6, Figs. 7 and 12) against ours",
+            caption="Published RMS errors (Sec. 6, Figs. 7 and 12) against ours, per window",
         ),
     ]
     if stale:
         blocks.append(
             Paragraph(
-                "verdicts.csv and rms_summary.csv disagree for "
+                "verdicts.csv and the scenario's summaries disagree for "
                 + ", ".join(stale)
                 + " (verdicts.csv may be older than the simulation results)."
             )
@@ -130,13 +174,74 @@ def _headline(verdicts: pd.DataFrame, summary: pd.DataFrame | None, scenario: st
     return blocks
 
 
+#: plain words for a cause kind (pipeline.columns.CAUSE_KINDS)
+CAUSE_WORDS = {
+    "unpublished": "cannot be reproduced from what the paper publishes (not refuted)",
+    "model": "a property of our model or scenario",
+    "paper_error": "an error of the paper",
+}
+
+
+def _causes(verdicts: pd.DataFrame) -> list[Block]:
+    """The failing rows grouped by root cause (one bullet per cause, its rows listed)."""
+    if "cause" not in verdicts.columns:
+        return []
+    failing = verdicts[verdicts["cause"].astype(str) != ""]
+    if failing.empty:
+        return []
+    items = []
+    for cause, g in failing.groupby("cause", sort=False):
+        kind = str(g["cause_kind"].iloc[0])
+        items.append(f"{CAUSE_WORDS.get(kind, kind)}: {cause} Rows: {', '.join(g['id'])}.")
+    unexplained = verdicts[
+        verdicts["verdict"].isin(["not_reproduced", "not_upheld"])
+        & (verdicts["cause"].astype(str) == "")
+    ]
+    blocks: list[Block] = [
+        Paragraph("Why rows fail, one root cause each (verdicts.csv, cause):"),
+        Bullets(items),
+    ]
+    if len(unexplained):
+        blocks.append(
+            Paragraph(
+                "Failing rows without an identified cause: " + ", ".join(unexplained["id"]) + "."
+            )
+        )
+    return blocks
+
+
+def steady_blocks(windows: pd.DataFrame | None) -> list[Block]:
+    """The steady-window statistics of one scenario (window_summary.csv)."""
+    if windows is None:
+        return []
+    steady = windows[windows["window"] == "steady"]
+    if steady.empty:
+        return []
+    start, end = float(steady["t_start_s"].iloc[0]), float(steady["t_end_s"].iloc[0])
+    if pd.isna(start):
+        return [Paragraph("Steady window: none (no bank of the set roll ends before the end).")]
+    cols = list(RMS_SUMMARY_COLUMNS)
+    s = steady[cols].set_index("filter").reindex(filter_order(list(steady["filter"])))
+    fmts = {c: fmt3 for c in cols if c not in ("filter", "n_runs")}
+    fmts["n_runs"] = lambda x: DASH if pd.isna(x) else str(int(x))
+    return [
+        Paragraph(
+            f"Steady window {start:.5g}-{end:.5g} s (from the end of the first bank that makes "
+            "roll observable; window_summary.csv):"
+        ),
+        frame_table(s.reset_index(), formatters=fmts),
+    ]
+
+
 def summary_blocks(
     audit: pd.DataFrame | None,
     verdicts: pd.DataFrame,
     summaries: Mapping[str, pd.DataFrame],
     published_scenario: str,
+    windows: Mapping[str, pd.DataFrame] | None = None,
 ) -> list[Block]:
-    """The blocks of the page's Summary section."""
+    """The blocks of the page's Summary section (``windows``: window_summary.csv per
+    scenario)."""
     blocks: list[Block] = [
         Paragraph(
             "The paper estimates roll and pitch of a maneuvering vehicle from a low-cost "
@@ -170,18 +275,27 @@ def summary_blocks(
             ]
         )
     )
-    blocks += _headline(verdicts, summaries.get(published_scenario), published_scenario)
+    blocks += _headline(
+        verdicts,
+        summaries.get(published_scenario),
+        published_scenario,
+        (windows or {}).get(published_scenario),
+    )
     failed = claims[claims["verdict"] == "not_upheld"]
     if len(failed):
         blocks.append(Paragraph("Claims not upheld (evidence from verdicts.csv):"))
         blocks.append(
             Bullets(
                 [
-                    f"{r.id} ({r.method}): {r.published}. Computed: {r.reproduced}."
+                    f"{r.id} ({r.method}): {r.published}. Computed: {r.reproduced}. "
+                    f"Why: {r.reason}."
+                    if getattr(r, "reason", "")
+                    else f"{r.id} ({r.method}): {r.published}. Computed: {r.reproduced}."
                     for r in failed.itertuples()
                 ]
             )
         )
     else:
         blocks.append(Paragraph("Claims not upheld: none."))
+    blocks += _causes(verdicts)
     return blocks

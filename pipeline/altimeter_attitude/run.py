@@ -10,6 +10,10 @@ Writes, under ``results/altimeter_attitude/<scenario>/``:
   what each filter's model and update do on perfect data;
 * ``run_rms.csv`` (``RUN_RMS_COLUMNS``): per run and filter the RMS over time after the
   transient (for paired comparisons between filters);
+* ``window_summary.csv`` (``WINDOW_SUMMARY_COLUMNS``) and ``window_run_rms.csv``
+  (``WINDOW_RUN_RMS_COLUMNS``): the same statistics over each averaging window, the flight
+  after the transient and the steady state after the first bank
+  (:mod:`pipeline.altimeter_attitude.windows`);
 * ``timeseries.csv`` (``TIMESERIES_COLUMNS``): the RMS-over-runs curves of Figs 7-12 at
   ``metrics.output_rate_hz``;
 * ``truth.csv`` (``TRUTH_COLUMNS``): the nominal trajectory (Figs 2, 4, 6) and the sensor
@@ -37,13 +41,15 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from pipeline.altimeter_attitude import complementary, euler_filters, linear_kf, metrics
+from pipeline.altimeter_attitude import complementary, euler_filters, linear_kf, metrics, windows
 from pipeline.altimeter_attitude.columns import (
     ALTIMETER_FILTERS,
     RMS_SUMMARY_COLUMNS,
     RUN_RMS_COLUMNS,
     TIMESERIES_COLUMNS,
     TRUTH_COLUMNS,
+    WINDOW_RUN_RMS_COLUMNS,
+    WINDOW_SUMMARY_COLUMNS,
 )
 from pipeline.altimeter_attitude.estimates import Estimates
 from pipeline.altimeter_attitude.scenario import ROOT, Scenario, load_scenario
@@ -189,6 +195,7 @@ def run_scenario(
         ignore_index=True,
     )
     first = int(round(sc.transient * sc.sensors.rate_hz))
+    wins = windows.scenario_windows(sc)
     run_rms = pd.concat(
         [metrics.run_rms_frame(e, inputs.truth, first) for e in estimates.values()],
         ignore_index=True,
@@ -201,6 +208,16 @@ def run_scenario(
             out_dir / "noise_free.csv", summary_frame(sc, inputs, noise_free), RMS_SUMMARY_COLUMNS
         ),
         "run_rms": write_csv(out_dir / "run_rms.csv", run_rms, RUN_RMS_COLUMNS),
+        "window_summary": write_csv(
+            out_dir / "window_summary.csv",
+            windows.summary_frame(wins, estimates, inputs.truth),
+            WINDOW_SUMMARY_COLUMNS,
+        ),
+        "window_run_rms": write_csv(
+            out_dir / "window_run_rms.csv",
+            windows.run_frame(wins, estimates, inputs.truth),
+            WINDOW_RUN_RMS_COLUMNS,
+        ),
         "timeseries": write_csv(out_dir / "timeseries.csv", series, TIMESERIES_COLUMNS),
         "truth": write_csv(out_dir / "truth.csv", truth_frame(inputs), TRUTH_COLUMNS),
     }

@@ -47,6 +47,7 @@ class Scenario:
     seed: int
     transient: float
     output_rate: float
+    steady_bank: float  # rad: the steady window starts when the first bank of this roll ends
 
     @property
     def config_sha256(self) -> str:
@@ -131,6 +132,7 @@ def build_scenario(raw: Any, path: Path) -> Scenario:
         seed=int(raw["monte_carlo"]["seed"]),
         transient=float(raw["metrics"]["transient_s"]),
         output_rate=out_rate,
+        steady_bank=float(raw["metrics"]["steady_after_bank_deg"]) * DEG,
     )
     sc.decisions()  # every decision names a real field
     return sc

@@ -41,5 +41,7 @@ def verdicts(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) 
     from pipeline.altimeter_attitude.verdicts import write_verdicts
 
     results = Path(inputs["results"][0]).parent
-    frame = write_verdicts(inputs["published"], inputs["scenario"], results, outputs["verdicts"])
+    frame = write_verdicts(
+        inputs["published"], inputs["scenario"], results, outputs["verdicts"], inputs["sweep"]
+    )
     log(frame["verdict"].value_counts().to_string())

@@ -5,13 +5,16 @@ sigmas are per-sample values, so the attitude random walk scales with sqrt(dt)),
 maneuver intensity (what the altimeter can observe comes from the vertical-plane
 accelerations), and the initial roll/pitch error. Points that share the sample rate are
 stacked along the run axis and filtered in one vectorised pass; errors are then computed per
-point against that point's own truth. Writes ``sweep.csv`` (``SWEEP_COLUMNS``).
+point against that point's own truth, over the flight after the transient and over the
+point's own steady window (:mod:`pipeline.altimeter_attitude.windows`; NaN where it has
+none). Writes ``sweep.csv`` (``SWEEP_COLUMNS``).
 """
 
 from __future__ import annotations
 
 import argparse
 import copy
+import math
 import sys
 import time
 from pathlib import Path
@@ -19,8 +22,8 @@ from typing import Any
 
 import pandas as pd
 
-from pipeline.altimeter_attitude import metrics, run
-from pipeline.altimeter_attitude.columns import SWEEP_COLUMNS
+from pipeline.altimeter_attitude import metrics, run, windows
+from pipeline.altimeter_attitude.columns import SWEEP_COLUMNS, WINDOWS
 from pipeline.altimeter_attitude.estimates import Estimates
 from pipeline.altimeter_attitude.scenario import Scenario, build_scenario, load_scenario
 from pipeline.altimeter_attitude.sensors import concat_inputs, simulate_inputs
@@ -88,8 +91,14 @@ def run_sweep(
         for i, ((sc, labels), part) in enumerate(zip(unique.values(), parts, strict=True)):
             sl = slice(i * n_runs, (i + 1) * n_runs)
             first = int(round(sc.transient * sc.sensors.rate_hz))
+            steady = windows.scenario_windows(sc)[WINDOWS.index("steady")]
             for name, est in estimates.items():
-                row = metrics.summary_row(_slice(est, sl), part.truth, first)
+                mine = _slice(est, sl)
+                row = metrics.summary_row(mine, part.truth, first)
+                if steady.defined:
+                    srow = metrics.summary_row(mine, part.truth, steady.first)
+                else:
+                    srow = {"roll_rms_deg": math.nan, "pitch_rms_deg": math.nan}
                 for parameter, v in labels:
                     rows.append(
                         {
@@ -99,6 +108,9 @@ def run_sweep(
                             "roll_rms_deg": row["roll_rms_deg"],
                             "pitch_rms_deg": row["pitch_rms_deg"],
                             "n_runs": n_runs,
+                            "steady_roll_rms_deg": srow["roll_rms_deg"],
+                            "steady_pitch_rms_deg": srow["pitch_rms_deg"],
+                            "steady_start_s": steady.start,
                         }
                     )
         log(

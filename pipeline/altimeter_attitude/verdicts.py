@@ -1,8 +1,10 @@
 """Verdicts of the altimeter-attitude paper: published numbers and claims vs our Monte Carlo.
 
-Reads ``config/published/altimeter_attitude.yaml``, the published scenario's YAML (for its
-transient) and, in its results folder, ``rms_summary.csv``, ``run_rms.csv``,
-``timeseries.csv`` and ``truth.csv``; writes ``results/altimeter_attitude/verdicts.csv``. The
+Reads ``config/published/altimeter_attitude.yaml``, the published scenario's YAML (its
+transient and the bank that opens its steady window), in its results folder
+``rms_summary.csv``, ``noise_free.csv``, ``run_rms.csv``, ``window_summary.csv``,
+``window_run_rms.csv``, ``timeseries.csv`` and ``truth.csv``, and ``sweep.csv`` (evidence of
+the causes); writes ``results/altimeter_attitude/verdicts.csv``. The
 rules are the shared engine's (:mod:`pipeline.verdicts`); this module binds the paper's locator
 (:mod:`pipeline.altimeter_attitude.quantities`) and claim tests
 (:mod:`pipeline.altimeter_attitude.claims`). ``method`` is the filter a verdict is about.
@@ -33,16 +35,26 @@ def write_verdicts(
     scenario_path: str | Path,
     results_dir: str | Path,
     out_path: str | Path,
+    sweep_path: str | Path | None = None,
 ) -> pd.DataFrame:
     """Judge every published number and claim; write ``out_path`` atomically.
 
-    ``scenario_path``: the published scenario's YAML (its transient); ``results_dir``: its
-    results folder (rms_summary.csv, run_rms.csv, timeseries.csv, truth.csv).
+    ``scenario_path``: the published scenario's YAML; ``results_dir``: its results folder;
+    ``sweep_path``: sweep.csv (without it the causes carry no sweep evidence).
     """
+    import math
+
     from pipeline.altimeter_attitude.scenario import load_scenario
 
     def read() -> ScenarioResults:
-        return ScenarioResults(results_dir, load_scenario(scenario_path).transient)
+        sc = load_scenario(scenario_path)
+        return ScenarioResults(
+            results_dir,
+            sc.transient,
+            bank_deg=math.degrees(sc.steady_bank),
+            sweep=sweep_path,
+            published=load_published(published_path),
+        )
 
     return engine.write_verdicts(
         published_path,
@@ -63,10 +75,11 @@ def main(argv: list[str] | None = None) -> int:
         "--scenario", type=Path, required=True, help="the published scenario's YAML"
     )
     parser.add_argument("--results", type=Path, required=True, help="its results directory")
+    parser.add_argument("--sweep", type=Path, default=None, help="sweep.csv (evidence of causes)")
     parser.add_argument("--out", type=Path, required=True, help="verdicts.csv to write")
     args = parser.parse_args(argv)
     try:
-        frame = write_verdicts(args.published, args.scenario, args.results, args.out)
+        frame = write_verdicts(args.published, args.scenario, args.results, args.out, args.sweep)
     except (ValueError, OSError) as exc:
         print(f"error: {exc}")
         return 2

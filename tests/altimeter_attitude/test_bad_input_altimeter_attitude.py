@@ -43,6 +43,8 @@ def _set(raw, dotted, value):
         ("filters.ukf.alpha", 0.0, r"filters\.ukf\.alpha"),
         ("metrics.transient_s", 500.0, r"metrics\.transient_s = 500.*shorter"),
         ("metrics.output_rate_hz", 7.0, r"metrics\.output_rate_hz = 7.*divide"),
+        ("metrics.steady_after_bank_deg", 0.0, r"metrics\.steady_after_bank_deg"),
+        ("metrics.steady_after_bank_deg", 90.0, r"metrics\.steady_after_bank_deg"),
         ("trajectory.duration_s", 200.01, r"trajectory\.duration_s = 200\.01.*whole number"),
         ("trajectory.maneuvers.0.channel", "yaw_deg", r"trajectory\.maneuvers\.0\.channel"),
         ("trajectory.intensity", 4.0, r"trajectory\..* reaches .*must stay within \(-80, 80\) deg"),

@@ -26,6 +26,7 @@ from pipeline.altimeter_attitude.columns import (
     ALTIMETER_FILTERS,
     RMS_SUMMARY_COLUMNS,
     SWEEP_COLUMNS,
+    WINDOW_SUMMARY_COLUMNS,
 )
 from pipeline.altimeter_attitude.paper import PAPER
 from pipeline.altimeter_attitude.scenario import load_scenario
@@ -81,6 +82,18 @@ def _synthetic_summary(rng: np.random.Generator) -> pd.DataFrame:
     return df[RMS_SUMMARY_COLUMNS]
 
 
+def _synthetic_windows(summary: pd.DataFrame) -> pd.DataFrame:
+    """window_summary.csv: the flight is rms_summary.csv, the steady window half of it."""
+    steady = summary.copy()
+    steady[RMS_SUMMARY_COLUMNS[1:-1]] *= 0.5
+    return pd.concat(
+        [
+            summary.assign(window="flight", t_start_s=20.0, t_end_s=200.0),
+            steady.assign(window="steady", t_start_s=140.18, t_end_s=200.0),
+        ]
+    )[WINDOW_SUMMARY_COLUMNS]
+
+
 def _synthetic_verdicts() -> pd.DataFrame:
     rows = [
         (
@@ -93,6 +106,15 @@ def _synthetic_verdicts() -> pd.DataFrame:
             "not_reproduced",
         ),
         ("V2.lkf_pitch", "statistical", "pitch_rms_deg", "linear_kf", "0.07", "0.08", "consistent"),
+        (
+            "V2.lkf_pitch/steady",
+            "approximate",
+            "pitch_rms_deg",
+            "linear_kf",
+            "0.07",
+            "0.3",
+            "not_reproduced",
+        ),
         ("V3.ukf_roll", "statistical", "roll_rms_deg", "ukf", "0.21", "0.5", "not_reproduced"),
         ("V4.ukf_pitch", "statistical", "pitch_rms_deg", "ukf", "0.10", "0.5", "not_reproduced"),
         (
@@ -113,7 +135,7 @@ def _synthetic_verdicts() -> pd.DataFrame:
 
 def _synthetic_sweep(rng: np.random.Generator) -> pd.DataFrame:
     rows = [
-        (p, v, f, *rng.uniform(0.3, 2.0, 2), 25)
+        (p, v, f, *rng.uniform(0.3, 2.0, 2), 25, *rng.uniform(0.2, 0.6, 2), 140.0)
         for p, vals in (("imu_rate_hz", (25, 50, 100)), ("initial_error_deg", (0.5, 2, 5)))
         for v in vals
         for f in ("linear_kf", "ukf")
@@ -151,6 +173,12 @@ def make_inputs(root: Path, *, figures: bool = True, audit: bool = True) -> dict
                 shutil.copy(REAL / name / f, d / f)
         if not (d / "rms_summary.csv").is_file():
             _synthetic_summary(rng).to_csv(d / "rms_summary.csv", index=False)
+        if (REAL / name / "window_summary.csv").is_file():
+            shutil.copy(REAL / name / "window_summary.csv", d / "window_summary.csv")
+        else:
+            _synthetic_windows(pd.read_csv(d / "rms_summary.csv")).to_csv(
+                d / "window_summary.csv", index=False
+            )
         if not (d / "provenance.json").is_file():
             (d / "provenance.json").write_text(
                 json.dumps(
@@ -307,21 +335,48 @@ def test_verdict_and_audit_counts_equal_the_csv(built):
         assert {k: v for k, v in shown[group].items() if v} == dict(expected[group]), group
     # the standard words are shown even at zero
     assert {"upheld", "not_upheld", "not_checkable"} <= set(shown["claims"])
-    assert {"consistent", "not_reproduced"} <= set(shown["values"])
+    # a value kind's words (pipeline.verdicts.kinds.NUMBER_VERDICTS), and no other kind's
+    from pipeline.verdicts.kinds import NUMBER_VERDICTS
+
+    kinds = set(verdicts.loc[verdicts["kind"] != "claim", "kind"])
+    words = {w for k in kinds for w in NUMBER_VERDICTS[k] if w != "not_checkable"}
+    assert words <= set(shown["values"]) <= words | {"not_checkable"}
     assert {"match", "differs", "not_checkable"} <= set(shown["audit"])
+
+
+def test_value_words_follow_the_kinds():
+    """'reproduced' is the word of exact and approximate values, 'consistent' of statistical
+    ones: approximate values never count as 'consistent'."""
+    from pipeline.altimeter_attitude.report_summary import _value_words
+
+    def frame(*kinds):
+        return pd.DataFrame({"kind": list(kinds), "verdict": ["not_reproduced"] * len(kinds)})
+
+    assert _value_words(frame("approximate")) == ["reproduced", "not_reproduced"]
+    assert _value_words(frame("statistical")) == ["consistent", "not_reproduced"]
+    assert _value_words(frame("exact", "statistical")) == [
+        "reproduced",
+        "consistent",
+        "not_reproduced",
+    ]
 
 
 def test_headline_reads_published_and_ours(built):
     verdicts = pd.read_csv(built["results"] / "verdicts.csv", dtype=str, keep_default_na=False)
     summary = pd.read_csv(built["results"] / "paper" / "rms_summary.csv").set_index("filter")
+    windows = pd.read_csv(built["results"] / "paper" / "window_summary.csv")
     sec = plain(section_html(built["text"], "summary"))
     for r in verdicts[verdicts["kind"] != "claim"].itertuples():
-        ours = fmt3(summary.at[r.method, r.quantity])
-        assert f"<td>{H.escape(r.id)}</td>" in sec
+        window = r.id.rsplit("/", 1)[1] if "/" in r.id else "flight"
+        w = windows[(windows["window"] == window) & (windows["filter"] == r.method)]
+        ours = fmt3(w.iloc[0][r.quantity])
+        if window == "flight":  # window_summary.csv repeats rms_summary.csv for the flight
+            assert ours == fmt3(summary.at[r.method, r.quantity])
+        assert f"<td>{H.escape(r.id)}</td><td>{r.method}</td><td>{window}</td>" in sec
         assert f"<td>{H.escape(r.published)}</td>" in sec
         assert f"<td>{ours}</td>" in sec, (r.id, ours)
     lkf = "/".join(fmt3(summary.at["linear_kf", f"{a}_rms_deg"]) for a in ("roll", "pitch"))
-    assert f"linear_kf roll/pitch RMS {lkf} deg" in sec
+    assert f"linear_kf roll/pitch RMS over the flight window {lkf} deg" in sec
     # every not-upheld claim is stated with its evidence
     for r in verdicts[verdicts["verdict"] == "not_upheld"].itertuples():
         assert H.escape(r.reproduced) in sec, r.id
@@ -472,3 +527,39 @@ def test_page_step(tmp_path, monkeypatch):
     text = out.read_text(encoding="utf-8")
     assert text.count("data:image/png;base64,") == len(FIGURES) + 1
     assert said == [f"wrote {out}"]
+
+
+def test_failing_rows_grouped_by_root_cause():
+    """One bullet per cause (its kind in plain words, its rows listed), and the failing rows
+    without a cause named."""
+    from pipeline.altimeter_attitude.report_summary import CAUSE_WORDS, summary_blocks
+    from pipeline.report.model import Paragraph
+
+    v = _synthetic_verdicts()
+    v["tolerance"], v["reason"] = "t", "r"
+    failing = v["verdict"].isin(["not_reproduced", "not_upheld"])
+    v["cause_kind"], v["cause"] = "", ""
+    ids = list(v.loc[failing, "id"])
+    v.loc[v["id"].isin(ids[:2]), ["cause_kind", "cause"]] = ["unpublished", "Not given."]
+    v.loc[v["id"] == ids[2], ["cause_kind", "cause"]] = ["model", "Our scenario."]
+    blocks = summary_blocks(None, v, {}, "paper")
+    bullets = [b for b in blocks if isinstance(b, Bullets)][-1]
+    assert bullets.items == [
+        f"{CAUSE_WORDS['unpublished']}: Not given. Rows: {ids[0]}, {ids[1]}.",
+        f"{CAUSE_WORDS['model']}: Our scenario. Rows: {ids[2]}.",
+    ]
+    assert "not refuted" in CAUSE_WORDS["unpublished"]
+    rest = ", ".join(ids[3:])
+    texts = [b.text for b in blocks if isinstance(b, Paragraph)]
+    assert f"Failing rows without an identified cause: {rest}." in texts
+
+
+def test_steady_window_table_per_scenario(built):
+    for path in built["summaries"]:
+        w = pd.read_csv(path.parent / "window_summary.csv")
+        steady = w[w["window"] == "steady"]
+        sec = plain(section_html(built["text"], f"results-{H.slugify(path.parent.name)}"))
+        start = float(steady["t_start_s"].iloc[0])
+        assert f"Steady window {start:.5g}-" in sec
+        for row in steady.itertuples():
+            assert f"<td>{row.filter}</td><td>{fmt3(row.roll_rms_deg)}</td>" in sec
