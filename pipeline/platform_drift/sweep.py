@@ -60,7 +60,10 @@ def plot(frame: pd.DataFrame, png_path: str | Path) -> list[Path]:
         for scheme, style in STYLE.items():
             cur = frame[(frame["case"] == case) & (frame["scheme"] == scheme)]
             if not cur.empty:
-                ax.plot(cur["lat_deg"], cur["error_2h_m"] / 1000.0, marker="o", ms=3, **style)
+                # one point per latitude: every point marked (the curves' own markevery is
+                # for 2 h time series)
+                points = {"marker": "o", "ms": 3, **style, "markevery": None}
+                ax.plot(cur["lat_deg"], cur["error_2h_m"] / 1000.0, **points)
         ax.set_title(titles[case], fontsize=10)
         ax.set_xlabel("latitude (deg)")
         ax.set_ylabel("position error at 2 h (km)")

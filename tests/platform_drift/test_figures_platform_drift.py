@@ -82,3 +82,20 @@ def test_simulated_curve_drawn_visibly_on_the_strapdown_one(tmp_path):
         assert "Fig. 5 (reproduced)" in fig._suptitle.get_text()
     finally:
         plt.close(fig)
+
+
+def test_latitude_sweep_figure_draws_every_scheme_of_the_curve_styles(tmp_path):
+    """Fig. 9 (the latitude sweep) with the curve styles of Figs. 5-8: every scheme drawn,
+    one marker per latitude, PNG and SVG written."""
+    from pipeline.platform_drift.sweep import CASES as SWEEP_CASES
+    from pipeline.platform_drift.sweep import SWEEP_COLUMNS, plot
+
+    rows = [
+        (lat, case, scheme, 1000.0 * (1 + i) * lat)
+        for lat in (10.0, 30.0, 60.0)
+        for case in SWEEP_CASES
+        for i, scheme in enumerate(STYLE)
+    ]
+    written = plot(pd.DataFrame(rows, columns=SWEEP_COLUMNS), tmp_path / "fig9.png")
+    assert sorted(p.suffix for p in written) == [".png", ".svg"]
+    assert all(p.stat().st_size > 1000 for p in written)
