@@ -95,7 +95,9 @@ def _appendix() -> list[Check]:
             "7a",
             printed=printed7,
             derived=(y - yhat) * (y - yhat).T,
-            if_differs="typo: the third term E[G(x) w (x - x_hat)^T] lacks its F^T (it is the "
+            differs_kind="paper_error",
+            if_differs="typo of the paper: the third term E[G(x) w (x - x_hat)^T], legible in "
+            "the seed text, lacks its F^T (it is the "
             "transpose of the second term F E[(x - x_hat) w^T G^T(x)], i.e. E[G(x) w (x - "
             "x_hat)^T] F^T). Compared before the expectation, with z = G(x) w and e = x - x_hat; "
             "the term is zero in expectation anyway (w independent of x, zero mean), so eq. 8a "
@@ -130,7 +132,10 @@ def _appendix() -> list[Check]:
             "10a",
             printed=printed10,
             derived=ci["E_GwwG"],
-            if_differs="typo: the expectation is missing on the first term; as printed it is the "
+            differs_kind="paper_error",
+            if_differs="typo of the paper: the expectation is missing on the first term (the seed "
+            "text renders the bracket coherently; 11a writes it with E(w w^T) inside); as "
+            "printed it is the "
             "random G(x_hat) w w^T G^T(x_hat), whose expectation G(x_hat) Q G^T(x_hat) the "
             "derivation has (residual G(x_hat)(w w^T - Q) G^T(x_hat)). The split by linearity of "
             "G (G(x) = G(x_hat) + G(x - x_hat)) is right, and 11a uses the expectation",
@@ -163,7 +168,9 @@ def _appendix() -> list[Check]:
             "13a",
             printed=P.PRINTED["13a"],
             derived=ci["cov"],
-            if_differs="typo: the transpose on the second G(x_hat) is missing (eq. 31 has it, "
+            differs_kind="paper_error",
+            if_differs="typo of the paper: the transpose on the second G(x_hat) is missing in a "
+            "coherent line of the seed text (eq. 31 has it, "
             "G(x_hat) Q G^T(x_hat)); for the paper's 5x6 G the printed product G Q G is not even "
             "defined. With the transpose the result matches the covariance computed by "
             "expectation (multiplicative_noise.covariance_identity)",

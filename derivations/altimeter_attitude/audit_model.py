@@ -59,13 +59,15 @@ def _eqs_24_to_30() -> list[Check]:
         "omega_tilde - n_w gives c_dot = ... + n_w x c = ... - [c x] n_w, and V_d_dot = ... - "
         "c^T n_a. With w defined as truth minus output it matches. The sign of w is immaterial: "
         "w and -w have the same distribution, and C enters the filter only through G Q G^T and "
-        "Gamma (Q kron P) Gamma^T, both quadratic in C. A notation slip, not an error"
+        "Gamma (Q kron P) Gamma^T, both quadratic in C. A sign convention for w (a notation "
+        "slip), not an error"
     )
     out.append(
         Check(
             "26.C",
             printed=P.PRINTED["26.C"],
             derived=mm["C"],
+            differs_kind="convention",
             if_differs=sign_note + ". The '+' joining C(x) w to eq. 26 is lost in the OCR (read "
             "from eq. 28)",
         )
@@ -83,6 +85,7 @@ def _eqs_24_to_30() -> list[Check]:
             "28",
             printed=P.PRINTED["28"],
             derived=md.state_rhs(),
+            differs_kind="convention",
             if_differs="differs only by the sign of the noise term, as eq. 26.C (same judgement): "
             + sign_note
             + ". A x + B g match (u = g, from the text after eq. 29)",
@@ -191,14 +194,24 @@ def _eqs_31_to_33() -> list[Check]:
     typo = (
         "typo of the paper: the innovation covariance uses the predicted covariance P_{k|k-1}, "
         "H P_{k|k-1} H^T + R_k (derived as the minimum-variance gain, multiplicative_noise."
-        "kalman_update); the printed P_{k-1|k-1} would mix two time steps"
+        "kalman_update); the printed P_{k-1|k-1}, legible in both the gain and the covariance "
+        "update, would mix two time steps"
     )
-    out.append(Check("31.K", printed=P.PRINTED["31.K"], derived=upd["K"], if_differs=typo))
+    out.append(
+        Check(
+            "31.K",
+            printed=P.PRINTED["31.K"],
+            derived=upd["K"],
+            differs_kind="paper_error",
+            if_differs=typo,
+        )
+    )
     out.append(
         Check(
             "31.P",
             printed=P.PRINTED["31.P"],
             derived=upd["P"],
+            differs_kind="paper_error",
             if_differs=typo + "; with P_{k|k-1} inside the inverse the printed form equals the "
             "derived (I - K H) P_{k|k-1}. The pipeline uses the derived update",
         )

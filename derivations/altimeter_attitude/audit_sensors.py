@@ -177,6 +177,7 @@ def _eqs_9_to_12() -> list[Check]:
             "11.phi",
             printed=roll,
             derived=s.phi,
+            differs_kind="paper_error",
             if_differs="differs: with eq. 10's f_y = -g cos(theta) sin(phi), f_z = -g cos(theta) "
             "cos(phi), atan2(f_y, f_z) = atan2(-sin(phi), -cos(phi)) = phi - pi (mod 2 pi) for "
             f"cos(theta) > 0 (computed: the residual is {offsets} at the sampled phi, theta in "

@@ -25,6 +25,7 @@ def checks() -> list[Check]:
             "37",
             printed=P.PRINTED["37"],
             derived=sensors.angular_rate_b(),
+            differs_kind="paper_error",
             if_differs="dimension slip of the paper: with [w~] = w^EI [c_x, c_y, c_z], c_z must add "
             "omega / w^EI, not omega (the same slip recurs in eqs. 68-69); at rest (omega = 0) both agree",
         )
@@ -67,8 +68,10 @@ def checks() -> list[Check]:
             "40.d",
             printed=P.PRINTED["40.d"],
             derived=a12["c"],
-            if_differs="the numerator must end in + 2 w^EI cos(th) sin(ph) sin(l), not + 2 w^EI: the "
-            "factor is lost (OCR line break or typo); the derivation gives "
+            differs_kind="paper_error",
+            if_differs="typo of the paper: the numerator must end in + 2 w^EI cos(th) sin(ph) "
+            "sin(l), not + 2 w^EI; the seed text renders the fraction coherently with the factor "
+            "absent (case 1, eq. 40.b, prints its term in full); the derivation gives "
             "(w90 - w270 + 2 Omega cos th sin ph sin l) / (2 Omega cos l)",
         )
     )
@@ -78,6 +81,7 @@ def checks() -> list[Check]:
             "41",
             printed=P.PRINTED["41"],
             derived=sp.Matrix(half),
+            differs_kind="text_artefact",
             if_differs="OCR artefact: the factor 2 of the half-angle formula is read as 'tau' "
             "(psi = 2 atan(...), as eq. 43 prints it)",
         )
@@ -105,10 +109,13 @@ def checks() -> list[Check]:
             "46",
             printed=P.PRINTED["46"],
             derived=sp.expand(eq46),
-            if_differs="garbled in print/OCR: the cos(psi) and cos(psi) sin(psi) terms lose factors "
-            "(sin(l), sin(psi)) and the constant is wrong; the derivation gives "
-            "(A^2 + B^2)/Omega^2 with A, B of eq. 44, whose coefficients are eq. 47's A-D (which match) "
-            "and the constant cos^2 l cos^2 ph + sin^2 l (1 - cos^2 th cos^2 ph)",
+            differs_kind="paper_error",
+            if_differs="error of the paper: the seed text renders the expansion coherently term by "
+            "term, but its B term has sin(psi) where B cos(psi) has sin(l) cos(psi), its C term "
+            "lacks the sin(psi) of C cos(psi) sin(psi), and its constant has + cos^2 ph cos^2 th "
+            "where the derivation has - cos^2 ph cos^2 th; the derivation gives (A^2 + B^2)/Omega^2 "
+            "with A, B of eq. 44, whose coefficients are eq. 47's A-D (which match) and the "
+            "constant cos^2 l cos^2 ph + sin^2 l (1 - cos^2 th cos^2 ph)",
         )
     )
     for key in ("A", "B", "C", "D"):
@@ -118,11 +125,12 @@ def checks() -> list[Check]:
             "47.E",
             printed=P.PRINTED["47.E"],
             derived=a3["E47"],
+            differs_kind="paper_error",
             if_differs="error of the paper (not explained by OCR): the constant must be "
             "cos^2 l cos^2 ph + sin^2 l (1 - cos^2 th cos^2 ph) - (w_max / w^EI)^2; the printed "
             "constant differs and the ratio lacks its square. With the printed E the quartic does "
-            "not return the true azimuth even for ideal sensors (tests/test_audit_north_finding.py); "
-            "the pipeline uses the derived E",
+            "not return the true azimuth even for ideal sensors "
+            "(tests/north_finding/test_audit_north_finding.py); the pipeline uses the derived E",
         )
     )
     Aq, Bq, Cq, Dq, Eq = a3["_quartic_symbols"]
@@ -164,6 +172,7 @@ def checks() -> list[Check]:
             "52",
             printed=P.PRINTED["52"],
             derived=a3["amp_A"] / a3["amp_B"],
+            differs_kind="text_artefact",
             if_differs="OCR artefact: the two-line numerator A = cos ps sin th sin ph cos l - sin ps "
             "cos ph cos l - cos th sin ph sin l is split into a fraction; the intended form is "
             "tan(tau*) = A/B with A, B of eq. 44 (eq. 51). The pipeline uses tau* = atan2(A, B)",

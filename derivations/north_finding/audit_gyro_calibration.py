@@ -47,6 +47,7 @@ def checks() -> list[Check]:
             "57",
             printed=P.PRINTED["57"],
             derived=om_model[0] / om_model[1],
+            differs_kind="text_artefact",
             if_differs="OCR artefact: the ratio (cos ps cos th cos l + sin th sin l) / ((cos ps sin th "
             "sin ph - sin ps cos ph) cos l - cos th sin ph sin l) has two-line numerator and denominator, "
             "read as a sum of two fractions",
@@ -57,9 +58,11 @@ def checks() -> list[Check]:
             "58",
             printed=P.PRINTED["58"],
             derived=sp.Matrix([a4["A"], a4["B"], a4["C"]]),
-            if_differs="B is wrong as printed: B = (omega_1/omega_2) sin th sin ph - cos th (cos th is "
-            "not divided by omega_2); A and C match. Likely the extent of the fraction bar lost in the "
-            "OCR (the '2' under each fraction is the subscript of omega_2)",
+            differs_kind="text_artefact",
+            if_differs="OCR artefact: B is wrong as printed, B = (omega_1/omega_2) sin th sin ph - cos "
+            "th (cos th is not divided by omega_2); A and C match. The OCR garbles this block (the "
+            "'2' under each fraction is the subscript of omega_2), and the extent of B's fraction "
+            "bar is lost with it",
         )
     )
     out.append(
@@ -67,8 +70,9 @@ def checks() -> list[Check]:
             "59",
             printed=P.PRINTED["59"],
             derived=sp.Matrix(half),
-            if_differs="typo or OCR: C^2 belongs under the root, sqrt(A^2 + B^2 - C^2), as in eqs. 41 "
-            "and 43",
+            differs_kind="paper_error",
+            if_differs="typo of the paper: C^2 belongs under the root, sqrt(A^2 + B^2 - C^2), as in "
+            "eqs. 41 and 43; the seed text renders the root coherently, ending before '- C'",
         )
     )
     om1_model = om_model[0]
@@ -123,8 +127,9 @@ def checks() -> list[Check]:
             "64.A",
             printed=P.PRINTED["64.A"],
             derived=a5["A"],
-            if_differs="typo: the last term must be -2 cos th tan ph tan^2 l sin th tan th tan ph "
-            "(printed tan th tan th)"
+            differs_kind="paper_error",
+            if_differs="typo of the paper: the last term must be -2 cos th tan ph tan^2 l sin th tan "
+            "th tan ph (printed tan th tan th, a coherent line of the seed text)"
             + (
                 "; with that reading the printed A equals the derived one"
                 if fixed_ok
@@ -152,7 +157,9 @@ def checks() -> list[Check]:
             printed=P.PRINTED["65.b"],
             derived=roots,
             sample=pos,
-            if_differs="typo: under the root 4AB cos^2 l, not 4AB cos l; the simplified form that "
+            differs_kind="paper_error",
+            if_differs="typo of the paper: under the root 4AB cos^2 l, not 4AB cos l (the seed text "
+            "renders the root coherently, with C^2 cos^2 l before it); the simplified form that "
             "follows (65.c) is right",
         )
     )
@@ -163,9 +170,10 @@ def checks() -> list[Check]:
             "67",
             printed=P.PRINTED["67"],
             derived=a5["cos_psi_sol"],
-            if_differs="fraction-bar extent (OCR or typo): cos psi = omega_1 / (S cos th cos l) - "
-            "tan th tan l (eqs. 61-62), the subtraction is outside the fraction; arccos also leaves "
-            "the sign of psi to the compass",
+            differs_kind="paper_error",
+            if_differs="typo of the paper (fraction-bar extent): cos psi = omega_1 / (S cos th cos l) "
+            "- tan th tan l (eqs. 61-62), the subtraction is outside the fraction, where the seed "
+            "text renders it coherently inside; arccos also leaves the sign of psi to the compass",
         )
     )
     a6 = azimuth.method6()
@@ -174,7 +182,8 @@ def checks() -> list[Check]:
             "68",
             printed=P.PRINTED["68"],
             derived=a6["model_z"],
-            if_differs="dimension slip (as eq. 37): the table rate omega is multiplied by w^EI; the "
+            differs_kind="paper_error",
+            if_differs="dimension slip of the paper (as eq. 37): the table rate omega is multiplied by w^EI; the "
             "gyro reads S (w^EI [...] + omega) + b. The paper then sets omega = 0, where both agree",
         )
     )
@@ -183,7 +192,8 @@ def checks() -> list[Check]:
             "69",
             printed=P.PRINTED["69"],
             derived=sp.expand((a6["model_z"] - s.b) / s.Omega),
-            if_differs="same slip as eq. 68: omega_3 = S ([...] + omega / w^EI); equal at omega = 0",
+            differs_kind="paper_error",
+            if_differs="same slip of the paper as eq. 68: omega_3 = S ([...] + omega / w^EI); equal at omega = 0",
         )
     )
     out.append(Check("70", printed=P.PRINTED["70"], derived=a6["scale"]))

@@ -38,6 +38,7 @@ def _eq_28() -> list[Check]:
             "28",
             printed=printed,
             derived=sp.Matrix([ex["phi_x_ddot"], ex["phi_y_ddot"]]),
+            differs_kind="convention",
             if_differs="approximation of the paper: differentiating eq. 15 with the commands of "
             "eq. 26 gives the gyroscopic terms p^2 phi_x + p q phi_y (row 1) and q^2 phi_y + p q "
             "phi_x (row 2); k_sh = g/R - phi_dot^2 - (lambda_dot + omega_e)^2 cos^2 = g/R - (p^2 "
@@ -102,7 +103,8 @@ def _eqs_29_to_32() -> list[Check]:
             "31.x",
             printed=P.PRINTED["31.x"],
             derived=full["phi_x_dot"],
-            if_differs="two slips: (i) typo (-omega_e cos cos psi_0) theta_F2^2 must be theta_F1^2 "
+            differs_kind="paper_error",
+            if_differs="two slips of the paper: (i) typo (-omega_e cos cos psi_0) theta_F2^2 must be theta_F1^2 "
             "(from r(0-) theta_F1 in (b_g3 - r(0-))(alpha cos psi_0 - theta_F1)); (ii) the "
             "second-order terms -alpha^2 omega_e cos cos psi_0 + alpha omega_e cos theta_F1 are "
             "missing because eq. 24 dropped alpha omega_e cos(phi_i). The first-order and "
@@ -134,6 +136,7 @@ def _eqs_29_to_32() -> list[Check]:
             "31.y",
             printed=P.PRINTED["31.y"],
             derived=full["phi_y_dot"],
+            differs_kind="paper_error",
             if_differs="sign error of the paper: eq. 27 gives phi_y_dot(0+) = (r(0-) - b_g3) "
             "phi_x0 + b_g2, so the b_g3 terms are -(alpha sin psi_0) b_g3 - b_g3 theta_F2, printed "
             "with '+'; plus the second-order alpha^2 omega_e cos sin psi_0 + alpha omega_e cos "
@@ -217,7 +220,8 @@ def _eqs_33_to_36() -> list[Check]:
             "34",
             printed=P.PRINTED["34"],
             derived=sp.Matrix([ic34[k] for k in ("phi_x", "phi_x_dot", "phi_y", "phi_y_dot")]),
-            if_differs="sign error (as in eq. 31): from eq. 27, phi_y_dot(0+) = alpha omega_e "
+            differs_kind="paper_error",
+            if_differs="sign error of the paper (as in eq. 31): from eq. 27, phi_y_dot(0+) = alpha omega_e "
             "sin(phi_i) sin psi_0 - alpha sin psi_0 b_g3 (printed + alpha sin psi_0 b_g3); the "
             "other three rows match ('a' of the OCR read alpha). Propagates into eq. 36's "
             "int q_merror",
@@ -280,7 +284,8 @@ def _eqs_33_to_36() -> list[Check]:
             printed=P.PRINTED["36.q"].xreplace(sub36),
             derived=c3["int_q"],
             sample=SEPARATED,
-            if_differs="the first term inherits the sign error of eq. 34: derived -(alpha sin psi_0 "
+            differs_kind="paper_error",
+            if_differs="the first term inherits the paper's sign error of eq. 34: derived -(alpha sin psi_0 "
             "b_g3 / sqrt(k_sh)) sin(sqrt(k_sh) t); the forced and homogeneous A-terms with a', b' "
             "match. The generated error_ch3 uses the derived form",
         )

@@ -139,10 +139,12 @@ def _eqs_12_to_19() -> list[Check]:
             "16",
             printed=P.PRINTED["16"],
             derived=rhs16,
+            differs_kind="paper_error",
             if_differs="the second component of -^{m_i} omega_ie must be +omega_e sin(psi) "
             "cos(phi_i) (C3(psi)^T [omega_e cos, 0, omega_e sin] = [omega_e cos cos psi, "
-            "-omega_e cos sin psi, omega_e sin]); printed C psi, likely an S/C confusion of the "
-            "OCR or a typo. With the derived vector the equation gives (lambda_dot + omega_e) "
+            "-omega_e cos sin psi, omega_e sin]); printed C psi, a typo of the paper: the seed text "
+            "renders the vector coherently, and eq. 19's phi_y_dot has the right + omega_e "
+            "cos(phi_i) sin(psi). With the derived vector the equation gives (lambda_dot + omega_e) "
             "cos(phi_i) = cos psi p_m - sin psi q_m, phi_i_dot = sin psi p_m + cos psi q_m, "
             "psi_dot = r_m - (lambda_dot + omega_e) sin(phi_i) (generated position_rates)",
         )
@@ -153,9 +155,10 @@ def _eqs_12_to_19() -> list[Check]:
             "17",
             printed=P.PRINTED["17"],
             derived=sp.Matrix([f17[0], f17[1]]),
+            differs_kind="paper_error",
             if_differs="typo of the paper: the Coriolis term is 2 R sin(phi_i) (lambda_dot + "
             "omega_e) phi_i_dot, not (lambda_dot + omega_e)^2 (dimensionally the square is "
-            "wrong); the rest matches the specific force of a vehicle on the sphere, first order "
+            "wrong, and the seed text prints it in both f1 and f2); the rest matches the specific force of a vehicle on the sphere, first order "
             "in the tilts (reading the unmatched '(' as (R phi_ddot + R(...)^2 sin cos) cos psi)",
         )
     )

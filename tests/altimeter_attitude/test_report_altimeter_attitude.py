@@ -63,6 +63,7 @@ AUDIT = pd.DataFrame(
             "",
             "definition",
         ],
+        "kind": ["", "", "", "convention", "", ""],
     }
 )[AUDIT_COLUMNS]
 
