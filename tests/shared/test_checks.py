@@ -108,3 +108,34 @@ def test_the_audit_frame_writes_the_kind_column():
 
 def _judged(kind: str) -> dict[str, str]:
     return {"differs_kind": kind, "if_differs": "a judgement with its evidence"}
+
+
+# the simplify budget of a residual's text is CPU time, so the text does not depend on the load
+def test_waiting_does_not_use_up_the_simplify_budget(monkeypatch):
+    import time
+
+    import derivations.checks as checks
+
+    def slow_but_idle(expr):
+        time.sleep(0.5)  # wall-clock time, no CPU: what a loaded machine adds
+        return sp.Symbol("simplified")
+
+    monkeypatch.setattr(checks, "SIMPLIFY_SECONDS", 0.1)
+    monkeypatch.setattr(checks.sp, "simplify", slow_but_idle)
+    assert checks._tidy(2 * x + 2) == sp.Symbol("simplified")
+
+
+def test_a_residual_over_the_cpu_budget_is_shown_factored(monkeypatch):
+    import time
+
+    import derivations.checks as checks
+
+    def busy(expr):
+        end = time.process_time() + 5.0
+        while time.process_time() < end:
+            pass
+        return sp.Symbol("simplified")
+
+    monkeypatch.setattr(checks, "SIMPLIFY_SECONDS", 0.1)
+    monkeypatch.setattr(checks.sp, "simplify", busy)
+    assert str(checks._tidy(2 * x + 2)) == "2*(x + 1)"  # factor_terms, not the simplified form
