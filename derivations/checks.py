@@ -6,9 +6,13 @@ written by hand:
 
 * ``match``: printed - derived is zero, symbolically or, where SymPy cannot
   simplify it, numerically at 40 seeded random points (relative 1e-9);
-* ``differs``: it is not; the row gives the simplified residual and the
-  judgement recorded with the check (what is correct; a typo of the paper or an
-  artefact of the OCR text);
+* ``differs``: it is not; the row gives the simplified residual, the judgement
+  recorded with the check (``if_differs``: what is correct, and the evidence) and
+  its kind (``differs_kind``, one of ``pipeline.columns.DIFFERS_KINDS``):
+  ``paper_error`` (the paper's printed formula is wrong), ``text_artefact`` (the
+  OCR or layout of the seed text garbled it) or ``convention`` (an approximation
+  or convention the paper chose). A difference without a recorded kind is an
+  error, not a row: every ``differs`` is reviewed;
 * ``not_checkable``: nothing to compare (equation absent from the seed text, or
   a definition), with the reason.
 
@@ -20,9 +24,15 @@ right side of ``quantity = ...``, whichever the check states.
 >>> x = sp.Symbol("x", real=True)
 >>> run_check(Check("1", printed=sp.sin(x) ** 2, derived=1 - sp.cos(x) ** 2)).status
 'match'
->>> row = run_check(Check("2", printed=2 * x, derived=3 * x, if_differs="typo"))
->>> row.status, row.residual, row.note
-('differs', '-x', 'typo')
+>>> row = run_check(
+...     Check("2", printed=2 * x, derived=3 * x, differs_kind="paper_error", if_differs="typo")
+... )
+>>> row.status, row.residual, row.note, row.kind
+('differs', '-x', 'typo', 'paper_error')
+>>> run_check(Check("3", printed=2 * x, derived=3 * x))  # doctest: +ELLIPSIS
+Traceback (most recent call last):
+...
+ValueError: eq. 3: printed and derived forms differ (residual -x) but ... give one of paper_error...
 """
 
 from __future__ import annotations
@@ -52,17 +62,50 @@ N_POINTS = 40
 REL_TOL = 1e-9
 
 
+def _kinds() -> dict[str, str]:
+    """The kinds of a ``differs`` with their labels (``pipeline.columns.DIFFERS_KINDS``)."""
+    from pipeline.columns import DIFFERS_KINDS
+
+    return DIFFERS_KINDS
+
+
+def _allowed_kinds() -> str:
+    return ", ".join(f"{kind} ({label})" for kind, label in _kinds().items())
+
+
 @dataclass(frozen=True)
 class Check:
-    """One equation of the paper (``equation`` is its number as a string: '47', '47.E', '19.b')."""
+    """One equation of the paper (``equation`` is its number as a string: '47', '47.E', '19.b').
+
+    ``differs_kind`` and ``if_differs`` go together: a judgement of a difference names its
+    kind, and a kind comes with its evidence; a ValueError otherwise.
+    """
 
     equation: str
     printed: Any = None
     derived: Any = None
-    if_differs: str = ""  # judgement when the forms differ: what is right; typo or OCR artefact
+    if_differs: str = ""  # judgement when the forms differ: what is right, and the evidence
+    differs_kind: str = ""  # paper_error | text_artefact | convention (pipeline.columns)
     if_match: str = ""  # optional remark when they agree
     not_checkable: str = ""  # reason, when there is nothing to compare
     sample: dict[sp.Symbol, tuple[float, float]] | None = None  # sampling ranges per symbol
+
+    def __post_init__(self) -> None:
+        if self.differs_kind and self.differs_kind not in _kinds():
+            raise ValueError(
+                f"eq. {self.equation}: differs_kind {self.differs_kind!r} is not one of "
+                f"{_allowed_kinds()}"
+            )
+        if self.if_differs and not self.differs_kind:
+            raise ValueError(
+                f"eq. {self.equation}: if_differs is given without differs_kind; give one of "
+                f"{_allowed_kinds()}"
+            )
+        if self.differs_kind and not self.if_differs:
+            raise ValueError(
+                f"eq. {self.equation}: differs_kind {self.differs_kind!r} is given without "
+                "if_differs, the judgement and its evidence"
+            )
 
 
 @dataclass(frozen=True)
@@ -73,6 +116,7 @@ class AuditRow:
     status: str
     residual: str
     note: str
+    kind: str = ""  # one of pipeline.columns.DIFFERS_KINDS on a differs row, else blank
     printed_expr: Any = field(default=None, compare=False, repr=False)
     derived_expr: Any = field(default=None, compare=False, repr=False)
     residual_expr: Any = field(default=None, compare=False, repr=False)
@@ -83,6 +127,7 @@ class AuditRow:
             "status": self.status,
             "residual": self.residual,
             "note": self.note,
+            "kind": self.kind,
         }
 
 
@@ -127,7 +172,9 @@ def numeric_residual(
     return worst
 
 
-SIMPLIFY_SECONDS = 10
+# CPU seconds (not wall-clock) that ``simplify`` gets per residual: the slowest residual of the
+# three papers takes about 9 s of CPU, so the budget leaves a margin of three
+SIMPLIFY_SECONDS = 30
 
 
 class _Timeout(Exception):
@@ -138,9 +185,11 @@ def _tidy(residual: sp.Expr) -> sp.Expr:
     """A readable residual. The status is already decided numerically, so this is presentation.
 
     ``simplify`` usually takes well under a second here, but its run time varies with SymPy's
-    term order from process to process and has exceeded minutes; it gets SIMPLIFY_SECONDS (in
-    the main thread, via SIGALRM), after which the residual is shown with common factors pulled
-    out instead.
+    term order from process to process and has exceeded minutes; it gets SIMPLIFY_SECONDS of
+    the process's CPU time (in the main thread, via ITIMER_PROF and SIGPROF), after which the
+    residual is shown with common factors pulled out instead. CPU time, not wall-clock time:
+    on a loaded machine a wall-clock budget cut the same residual short in one run and not in
+    the next, so the text of equation_audit.csv depended on the load.
     """
     import signal
     import threading
@@ -151,15 +200,19 @@ def _tidy(residual: sp.Expr) -> sp.Expr:
     def _raise(signum, frame):
         raise _Timeout
 
-    previous = signal.signal(signal.SIGALRM, _raise)
-    signal.setitimer(signal.ITIMER_REAL, SIMPLIFY_SECONDS)
+    previous = signal.signal(signal.SIGPROF, _raise)
+    signal.setitimer(signal.ITIMER_PROF, SIMPLIFY_SECONDS)
     try:
         return sp.simplify(sp.trigsimp(residual))
     except _Timeout:
         return sp.factor_terms(residual)
     finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
+        signal.setitimer(signal.ITIMER_PROF, 0)
+        signal.signal(signal.SIGPROF, previous)
+
+
+def _short(text: str, limit: int = 200) -> str:
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def run_check(check: Check) -> AuditRow:
@@ -197,9 +250,22 @@ def run_check(check: Check) -> AuditRow:
     if all(r == 0 for r in simplified):
         return AuditRow(check.equation, "match", "0", check.if_match, **exprs)
     text = "; ".join(str(r) for r in simplified) if len(simplified) > 1 else str(simplified[0])
-    note = check.if_differs or "differs: no judgement recorded"
+    if not check.differs_kind:
+        raise ValueError(
+            f"eq. {check.equation}: printed and derived forms differ (residual {_short(text)}) but the "
+            f"check records no differs_kind; give one of {_allowed_kinds()}, with the evidence "
+            "in if_differs"
+        )
     residual = simplified[0] if len(simplified) == 1 else sp.Matrix(simplified)
-    return AuditRow(check.equation, "differs", text, note, residual_expr=residual, **exprs)
+    return AuditRow(
+        check.equation,
+        "differs",
+        text,
+        check.if_differs,
+        check.differs_kind,
+        residual_expr=residual,
+        **exprs,
+    )
 
 
 def run_audit(checks: Iterable[Check]) -> list[AuditRow]:

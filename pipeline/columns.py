@@ -8,9 +8,21 @@ imports its columns from one of them, so a rename happens in one place. Units ar
 
 from __future__ import annotations
 
-# results/<slug>/equation_audit.csv
-AUDIT_COLUMNS = ["equation", "status", "residual", "note"]
+# results/<slug>/equation_audit.csv; ``kind`` (one of DIFFERS_KINDS) is written on ``differs``
+# rows only and is blank on the others
+AUDIT_COLUMNS = ["equation", "status", "residual", "note", "kind"]
 AUDIT_STATUSES = ("match", "differs", "not_checkable")
+#: what a ``differs`` is, with the label a report shows for it:
+#: paper_error: the paper's printed formula is wrong (the seed text renders it coherently);
+#: text_artefact: the seed text garbled it (OCR, layout: a misread glyph, stacked lines, a
+#: displaced block), not the paper's mathematics;
+#: convention: an approximation or a convention the paper chose (small angles, a dropped term,
+#: a sign, frame or notation convention), used consistently.
+DIFFERS_KINDS = {
+    "paper_error": "error of the paper",
+    "text_artefact": "artefact of the text",
+    "convention": "approximation or convention",
+}
 
 # results/<slug>/verdicts.csv
 VERDICT_COLUMNS = ["id", "kind", "quantity", "method", "published", "reproduced", "verdict", "note"]

@@ -64,6 +64,7 @@ AUDIT = pd.DataFrame(
             "",
             "definition",
         ],
+        "kind": ["", "", "", "convention", "", ""],
     }
 )[AUDIT_COLUMNS]
 

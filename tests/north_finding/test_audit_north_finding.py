@@ -15,19 +15,21 @@ from derivations.checks import Check, run_check
 from derivations.north_finding import azimuth, leveling
 from derivations.north_finding import printed as P
 from derivations.north_finding import symbols as s
-from pipeline.columns import AUDIT_COLUMNS, AUDIT_STATUSES
+from pipeline.columns import AUDIT_COLUMNS, AUDIT_STATUSES, DIFFERS_KINDS
 from pipeline.generated import north_finding as gen
 from pipeline.north_finding import estimators as est
 
 pytestmark = pytest.mark.slow  # the module fixture runs the whole audit (~30 s)
 
-# The equations whose printed form differs from the derivation. Asserted exactly: a change in
-# a derivation or a transcription that flips a status shows up here and must be reviewed.
+# The equations whose printed form differs from the derivation, with the kind of each
+# difference (the judgements in audit_*.py give the evidence). Asserted exactly: a change in a
+# derivation or a transcription that flips a status or a kind shows up here and must be reviewed.
+PAPER, TEXT = "paper_error", "text_artefact"
 EXPECTED_DIFFERS = {
-    "16.b", "21", "22", "23", "37", "40.d", "41", "46", "47.E",
-    "52", "57", "58", "59", "64.A", "65.b", "67", "68", "69",
+    "16.b": PAPER, "21": PAPER, "22": PAPER, "23": TEXT, "37": PAPER, "40.d": PAPER,
+    "41": TEXT, "46": PAPER, "47.E": PAPER, "52": TEXT, "57": TEXT, "58": TEXT, "59": PAPER,
+    "64.A": PAPER, "65.b": PAPER, "67": PAPER, "68": PAPER, "69": PAPER,
 }  # fmt: skip
-DEFAULT_NOTE = "differs: no judgement recorded"
 EQ = re.compile(r"^(\d+)(\.[A-Za-z0-9]+)?$")
 
 
@@ -63,8 +65,8 @@ def test_differs_rows_have_residual_and_judgement(audit):
         assert isinstance(row["residual"], str) and row["residual"].strip() not in ("", "0"), row[
             "equation"
         ]
-        assert isinstance(row["note"], str) and row["note"].strip(), row["equation"]
-        assert row["note"] != DEFAULT_NOTE, row["equation"]
+        assert isinstance(row["note"], str) and len(row["note"]) > 40, row["equation"]
+        assert row["kind"] in DIFFERS_KINDS, row["equation"]
 
 
 def test_match_and_not_checkable_rows(audit):
@@ -73,10 +75,14 @@ def test_match_and_not_checkable_rows(audit):
     nc = audit[audit["status"] == "not_checkable"]
     assert nc["note"].map(lambda x: isinstance(x, str) and len(x.strip()) > 10).all()
     assert nc["residual"].map(lambda x: not isinstance(x, str) or x == "").all()
+    # a kind only on a differs row
+    others = audit[audit["status"] != "differs"]
+    assert others["kind"].map(lambda x: not isinstance(x, str) or x == "").all()
 
 
-def test_expected_set_of_differs(audit):
-    assert set(audit.loc[audit["status"] == "differs", "equation"]) == EXPECTED_DIFFERS
+def test_expected_differs_and_their_kinds(audit):
+    differs = audit[audit["status"] == "differs"]
+    assert dict(zip(differs["equation"], differs["kind"], strict=True)) == EXPECTED_DIFFERS
 
 
 def test_the_derived_forms_that_the_pipeline_uses_match(audit):
@@ -116,15 +122,19 @@ def test_the_derived_forms_that_the_pipeline_uses_match(audit):
 def test_wrong_derivation_is_flagged(label, printed, derived_fn):
     derived = derived_fn()
     assert run_check(Check(label, printed=printed(), derived=derived)).status == "match"
-    # a relative change of 1e-6 (far above the 1e-9 tolerance) ...
-    row = run_check(Check(label, printed=printed(), derived=derived * (1 + sp.Rational(1, 10**6))))
-    assert row.status == "differs"
+    # a relative change of 1e-6 (far above the 1e-9 tolerance) is a difference: without a
+    # recorded kind it stops the audit, naming the equation ...
+    scaled = derived * (1 + sp.Rational(1, 10**6))
+    with pytest.raises(ValueError, match=rf"^eq\. {re.escape(label)}: printed and derived forms"):
+        run_check(Check(label, printed=printed(), derived=scaled))
+    judged = {"differs_kind": "paper_error", "if_differs": "a judgement with its evidence"}
+    row = run_check(Check(label, printed=printed(), derived=scaled, **judged))
+    assert (row.status, row.kind) == ("differs", "paper_error")
     assert row.residual not in ("", "0")
-    assert row.note == DEFAULT_NOTE  # no judgement recorded for an unexpected difference
-    # ... and a structural change (the sign of one term flipped)
+    # ... and so is a structural change (the sign of one term flipped)
     first = sp.Add.make_args(sp.expand(derived))[0]
     wrong = derived - 2 * first
-    assert run_check(Check(label, printed=printed(), derived=wrong)).status == "differs"
+    assert run_check(Check(label, printed=printed(), derived=wrong, **judged)).status == "differs"
 
 
 # --------------------------------------------------------------------------------------------

@@ -314,6 +314,7 @@ def make_inputs(root: Path, seed: int = 20230101, *, with_optional: bool = True)
             "note": np.where(
                 status == "differs", "OCR swapped sin and cos (typo of the paper)", ""
             ),
+            "kind": np.where(status == "differs", "paper_error", ""),
         }
     )[AUDIT_COLUMNS].to_csv(results / "equation_audit.csv", index=False)
 

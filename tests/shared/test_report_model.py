@@ -125,7 +125,9 @@ def test_missing_input_names_the_file_and_writes_nothing(inputs, tmp_path):
 
 def test_paper_section_is_assembled_from_the_papers_parts(inputs):
     rep = report(inputs)
-    audit = pd.DataFrame({"equation": ["1"], "status": ["match"], "residual": ["0"], "note": [""]})
+    audit = pd.DataFrame(
+        {"equation": ["1"], "status": ["match"], "residual": ["0"], "note": [""], "kind": [""]}
+    )
     verdicts = pd.DataFrame(
         {
             "id": ["T1"],
@@ -184,7 +186,9 @@ def test_the_papers_math_stems_reach_the_pdf():
     from pipeline.report.equations import equation_section
     from pipeline.report.reproduction_pdf import render_typst
 
-    audit = pd.DataFrame({"equation": ["1"], "status": ["match"], "residual": ["0"], "note": [""]})
+    audit = pd.DataFrame(
+        {"equation": ["1"], "status": ["match"], "residual": ["0"], "note": [""], "kind": [""]}
+    )
     forms = [{"equation": "1", "printed_srepr": "Symbol('thetat_1')"}]
     counts = {"match": 1, "differs": 0, "not_checkable": 0}
     sec = equation_section("pendulum", audit, forms, counts, PENDULUM.math_stems)

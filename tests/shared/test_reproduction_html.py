@@ -115,6 +115,7 @@ def _synthetic_tree(base: Path) -> Path:
                     "0" if s == "match" else ("x - 1" if s == "differs" else "") for s in statuses
                 ],  # fmt: skip
                 "note": [f"note {i}" for i in range(len(statuses))],
+                "kind": ["paper_error" if s == "differs" else "" for s in statuses],
             }
         )
         audit.to_csv(rdir / "equation_audit.csv", index=False)
@@ -431,7 +432,8 @@ def test_scoreboard_ids_link_to_their_rows(built):
 
 def test_line_names_the_failures():
     audit = pd.DataFrame({"equation": ["1", "2"], "status": ["match", "differs"],
-                          "residual": ["0", "x"], "note": ["", ""]})  # fmt: skip
+                          "residual": ["0", "x"], "note": ["", ""],
+                          "kind": ["", "paper_error"]})  # fmt: skip
     verdicts = pd.DataFrame(
         [
             ["A1", "exact", "q", "m", "1", "1", "reproduced", ""],

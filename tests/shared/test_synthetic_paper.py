@@ -9,13 +9,17 @@ them in and adding its slug to ``papers:`` in ``config/config.yaml``.
 
 from __future__ import annotations
 
+import os
 import shutil
+import subprocess
+import sys
 from pathlib import Path
 
 import pandas as pd
 import pytest
 import yaml
 
+from pipeline.columns import AUDIT_COLUMNS
 from tests.workflow_harness import ROOT, copy_repo, snakemake
 
 SYNTHETIC = ROOT / "tests" / "synthetic_paper"
@@ -75,6 +79,28 @@ def test_a_fourth_paper_plans_beside_the_others(tmp_path):
     assert "paper=pendulum" in out and "paper=north_finding" in out
 
 
+def test_the_synthetic_papers_audit_gives_its_wrong_equation_a_kind(tmp_path):
+    """The paper's audit on its own (its command line, no workflow): eq. 4's /8 is a
+    ``differs`` of kind paper_error, the other rows carry no kind."""
+    copy_repo(tmp_path)
+    install(tmp_path, [SLUG])
+    out = tmp_path / "equation_audit.csv"
+    r = subprocess.run(
+        [sys.executable, "-m", f"derivations.{SLUG}.audit", "--out", str(out)],
+        cwd=tmp_path,
+        env={**os.environ, "PYTHONPATH": str(tmp_path)},
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert r.returncode == 0, r.stderr[-3000:]
+    audit = pd.read_csv(out, dtype=str, keep_default_na=False)
+    assert list(audit.columns) == AUDIT_COLUMNS
+    pairs = zip(audit["status"], audit["kind"], strict=True)
+    rows = dict(zip(audit["equation"], pairs, strict=True))
+    assert rows == {"1": ("match", ""), "3": ("match", ""), "4": ("differs", "paper_error")}
+
+
 @pytest.mark.slow
 def test_the_synthetic_paper_runs_end_to_end(tmp_path):
     copy_repo(tmp_path)
@@ -86,6 +112,7 @@ def test_the_synthetic_paper_runs_end_to_end(tmp_path):
     audit = pd.read_csv(results / "equation_audit.csv", dtype=str, keep_default_na=False)
     statuses = dict(zip(audit["equation"], audit["status"], strict=True))
     assert statuses == {"1": "match", "3": "match", "4": "differs"}  # eq. 4's /8 is wrong
+    assert dict(zip(audit["equation"], audit["kind"], strict=True))["4"] == "paper_error"
     assert "is fresh" in (results / "codegen_check.txt").read_text()
 
     periods = pd.read_csv(results / "paper" / "periods.csv")
