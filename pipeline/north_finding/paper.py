@@ -65,6 +65,9 @@ SCENARIO_FILES = (
     "mc_summary.csv",
     "error_budget.csv",
     "sensitivity.csv",
+    "ranking.csv",
+    "ranking_pairs.csv",
+    "a2_scan.csv",
     "provenance.json",
 )
 
