@@ -1,16 +1,25 @@
 """Claim predicates of the north-finding paper (registered in :data:`CLAIMS`).
 
-The statistic of argmin / argmax / close is the Monte Carlo RMS of error_pct,
-sqrt(mean(error_pct^2)) over the trials of ``mc_trials.csv``: it counts a constant offset and
-the spread alike. ``dominant_source`` reads ``error_budget.csv``: the error of the noise-free
-real run with one source switched on at a time.
+The paper ranks its methods without giving the averaging count N, so argmin / argmax / close
+are judged on every rank set of :mod:`pipeline.north_finding.ranking`: the Monte Carlo at each
+N of the scenario's ``ranking`` block (``ranking.csv``, ``ranking_pairs.csv``), then the
+noise-free run (``estimates.csv``), one verdict row each (suffix ``N=100``, ``noise-free``);
+without ranking files, the trials of ``mc_trials.csv`` (one row, no suffix). Their statistic is
+the RMS of error_pct, sqrt(mean(error_pct^2)): it counts a constant offset and the spread alike.
+Every row's reason ends with the N at which the claim holds and those at which it does not.
 
-* ``argmin`` / ``argmax``: the method with the smallest / largest RMS among ``methods`` is
-  ``expect``;
+* ``argmin`` / ``argmax``: ``expect`` has the smallest / largest RMS among ``methods``, separated
+  from every other: the paired difference of the squared % errors over the same trials lies
+  beyond :data:`~pipeline.north_finding.ranking.Z_RESOLVE` standard errors (noise-free: any
+  difference beyond the tie); a method that is the same estimator (equal on every trial) or not
+  separated matches it, and the claim is not upheld at that N;
 * ``close``: the RMS of ``a`` and ``b`` differ by at most ``rel_tol`` x the larger one;
-* ``dominant_source``: the source with the largest |error| for the method and quantity (among
-  ``sources``, default scale_factor, misalignment, bias, noise) is ``expect``.
+* ``dominant_source`` reads ``error_budget.csv`` (the error of the noise-free real run with one
+  source switched on at a time): the source with the largest |error| for the method and
+  quantity (among ``sources``, default scale_factor, misalignment, bias, noise) is ``expect``.
 
+A failing row carries its root cause (:mod:`pipeline.north_finding.causes`); a ranking that
+holds at some N and not at others, with no other cause, is explained by the unpublished N.
 ``not_checkable`` (with the reason) when a method named in the predicate has no rows for the
 quantity, e.g. the paper names a method that gives no such estimate.
 """
@@ -18,13 +27,16 @@ quantity, e.g. the paper names a method that gives no such estimate.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from dataclasses import replace
 from typing import Any
 
-import numpy as np
 import pandas as pd
 
+from pipeline.north_finding import causes
 from pipeline.north_finding.columns import ERROR_SOURCES, METHOD_QUANTITIES, METHODS
 from pipeline.north_finding.quantities import QUANTITY_UNITS, rows
+from pipeline.north_finding.ranking import TIE_REL, Z_RESOLVE, RankSet, rank_sets
+from pipeline.verdicts.cause import Cause
 from pipeline.verdicts.claims import ClaimRegistry, ClaimResult
 from pipeline.verdicts.published import Problem
 
@@ -59,11 +71,6 @@ def _expect_among_methods(args: Mapping[str, Any]) -> list[Problem]:
     return [("expect", args["expect"], f"one of the predicate's methods {args['methods']}")]
 
 
-def _rms_pct(trials: pd.DataFrame, method: str, quantity: str) -> float | None:
-    err = rows(trials, method, quantity)["error_pct"].to_numpy(dtype=float)
-    return None if err.size == 0 else float(np.sqrt(np.mean(err**2)))
-
-
 def _lacking(methods: Sequence[str], quantity: str, source: str) -> str:
     parts = []
     for method in methods:
@@ -77,33 +84,143 @@ def _lacking(methods: Sequence[str], quantity: str, source: str) -> str:
     return f"not checkable: no rows for quantity {quantity} from {'; '.join(parts)} in {source}"
 
 
-def _arg(kind: str, args: Mapping[str, Any], results: Mapping[str, pd.DataFrame]) -> ClaimResult:
+def _tolerance(rank_set: RankSet) -> str:
+    if rank_set.noise_free:
+        return (
+            f"noise-free: the |% error| of each method decides; equal to {TIE_REL:g} relative "
+            "is a tie"
+        )
+    return (
+        f"{rank_set.where}: a method ranks before another when the paired difference of their "
+        f"squared % errors lies beyond {Z_RESOLVE:g} standard errors; equal on every trial to "
+        f"{TIE_REL:g} relative is a tie"
+    )
+
+
+def _summary(results: list[ClaimResult], sets: list[RankSet]) -> list[ClaimResult]:
+    """Append to every row's reason at which N the claim holds and at which it does not."""
+    held = [s.label for r, s in zip(results, sets, strict=True) if r.verdict == "upheld"]
+    failed = [s.label for r, s in zip(results, sets, strict=True) if r.verdict == "not_upheld"]
+    if len(sets) < 2:
+        return results
+    if not failed:
+        text = f"holds at every N judged ({', '.join(held)})"
+    elif not held:
+        text = f"holds at none of the N judged ({', '.join(failed)})"
+    else:
+        text = f"holds at N = {', '.join(held)}; not at N = {', '.join(failed)}"
+    return [replace(r, reason=f"{r.reason}; {text}") for r in results]
+
+
+def _n_cause(claim: str, results: list[ClaimResult], sets: list[RankSet]) -> Cause | None:
+    """The averaging count: a ranking that holds at some N and not at others."""
+    held = [s.label for r, s in zip(results, sets, strict=True) if r.verdict == "upheld"]
+    failed = [(r, s) for r, s in zip(results, sets, strict=True) if r.verdict == "not_upheld"]
+    if not held or not failed:
+        return None
+    why = "; ".join(f"{s.label}: {r.notes[0]}" for r, s in failed if r.notes)
+    return Cause(
+        "unpublished",
+        f"The paper does not give the averaging count N, and its ranking ({claim}) holds at "
+        f"N = {', '.join(held)} but not at N = {', '.join(s.label for _, s in failed)} ({why})",
+    )
+
+
+def _arg_one(kind: str, args: Mapping[str, Any], rank_set: RankSet, results: Any) -> ClaimResult:
     methods, quantity, expect = list(args["methods"]), args["quantity"], args["expect"]
     base = {"method": ",".join(methods), "quantity": quantity, "published": expect}
-    tolerance = f"none: the {kind} of the Monte Carlo RMS of error_pct among {methods} decides"
-    rms = {m: _rms_pct(results["mc_trials"], m, quantity) for m in methods}
-    missing = [m for m, r in rms.items() if r is None]
-    if missing:
-        reason = _lacking(missing, quantity, "mc_trials.csv")
-        return ClaimResult("not_checkable", "n/a", tolerance, reason, **base)
-    ordered = sorted(methods, key=lambda m: rms[m], reverse=kind == "argmax")
+    rms = {m: rank_set.get(m, quantity) for m in methods}
+    sign = -1.0 if kind == "argmax" else 1.0
+    ordered = sorted(methods, key=lambda m: sign * rms[m])
     sep = " > " if kind == "argmax" else " < "
-    reproduced = sep.join(f"{m} (rms {rms[m]:.4g} %)" for m in ordered)
-    ok = ordered[0] == expect
-    reason = f"{kind} of the Monte Carlo RMS of error_pct = {ordered[0]} (expected {expect})"
-    return ClaimResult("upheld" if ok else "not_upheld", reproduced, tolerance, reason, **base)
+    stat = "|error|" if rank_set.noise_free else "rms"
+    reproduced = sep.join(f"{m} ({stat} {rms[m]:.4g} %)" for m in ordered)
+    comps = [rank_set.compare(quantity, expect, m) for m in methods if m != expect]
+    # a rival matches or beats the expected method: the same estimator, or not separated,
+    # or separated on the wrong side
+    rivals = [c for c in comps if c.identical or not c.separated or sign * c.d > 0]
+    identical = [c.b for c in comps if c.identical]
+    how = "smaller" if kind == "argmin" else "larger"
+    if rivals:
+        worst = max(rivals, key=lambda c: (c.identical, sign * c.d))
+        note = (
+            f"{worst.b} {how} than {expect}"
+            if worst.separated
+            else f"{expect} not distinguishably {how} than {worst.b} ({worst.describe()})"
+        )
+        if worst.identical:
+            note = worst.describe()
+        reason = f"{kind} of the RMS % error ({rank_set.where}) is not {expect} alone: {note}"
+        cause = causes.for_ranking(quantity, expect, [c.b for c in rivals], identical, results)
+        return ClaimResult(
+            "not_upheld", reproduced, _tolerance(rank_set), reason, suffix=rank_set.suffix,
+            notes=(note,), cause=cause, **base,
+        )  # fmt: skip
+    closest = min(comps, key=lambda c: abs(c.z))
+    reason = (
+        f"{kind} of the RMS % error ({rank_set.where}) = {expect}, separated from every other "
+        f"method (closest: {closest.describe()})"
+    )
+    return ClaimResult(
+        "upheld", reproduced, _tolerance(rank_set), reason, suffix=rank_set.suffix, **base
+    )
+
+
+def _arg(kind: str, args: Mapping[str, Any], results: Mapping[str, Any]) -> list[ClaimResult]:
+    methods, quantity, expect = list(args["methods"]), args["quantity"], args["expect"]
+    base = {"method": ",".join(methods), "quantity": quantity, "published": expect}
+    every = rank_sets(results)
+    sets = [s for s in every if all(s.get(m, quantity) is not None for m in methods)]
+    if not sets:
+        missing = sorted({m for m in methods for s in every if s.get(m, quantity) is None})
+        tolerance = f"none: the {kind} of the RMS % error among {methods} decides"
+        reason = _lacking(missing or methods, quantity, "the Monte Carlo results")
+        return [ClaimResult("not_checkable", "n/a", tolerance, reason, **base)]
+    out = _summary([_arg_one(kind, args, s, results) for s in sets], sets)
+    n_cause = _n_cause(f"{kind} {expect}", out, sets)
+    return [r if r.cause or r.verdict != "not_upheld" else replace(r, cause=n_cause) for r in out]
 
 
 @CLAIMS.register("argmin", _ARG_SCHEMA, _expect_among_methods)
 def argmin(args: Mapping[str, Any], results: Mapping[str, pd.DataFrame]) -> list[ClaimResult]:
-    """The method with the smallest Monte Carlo RMS of error_pct is ``expect``."""
-    return [_arg("argmin", args, results)]
+    """The method with the smallest RMS % error is ``expect``, at each N judged."""
+    return _arg("argmin", args, results)
 
 
 @CLAIMS.register("argmax", _ARG_SCHEMA, _expect_among_methods)
 def argmax(args: Mapping[str, Any], results: Mapping[str, pd.DataFrame]) -> list[ClaimResult]:
-    """The method with the largest Monte Carlo RMS of error_pct is ``expect``."""
-    return [_arg("argmax", args, results)]
+    """The method with the largest RMS % error is ``expect``, at each N judged."""
+    return _arg("argmax", args, results)
+
+
+def _close_one(args: Mapping[str, Any], rank_set: RankSet, results: Any) -> ClaimResult:
+    a, b, rel_tol = args["a"], args["b"], float(args["rel_tol"])
+    same = a["quantity"] == b["quantity"]
+    base = {
+        "method": f"{a['method']},{b['method']}",
+        "quantity": a["quantity"] if same else f"{a['quantity']}/{b['quantity']}",
+        "published": f"{a['method']} ~ {b['method']} (within {rel_tol:g} relative)",
+    }
+    tolerance = f"{rank_set.where}: |rms_a - rms_b| <= {rel_tol:g} x max(rms_a, rms_b)"
+    ra, rb = rank_set.get(a["method"], a["quantity"]), rank_set.get(b["method"], b["quantity"])
+    scale = max(ra, rb)
+    rel = abs(ra - rb) / scale if scale > 0 else 0.0
+    stat = "|error|" if rank_set.noise_free else "rms"
+    reproduced = (
+        f"{a['method']} ({stat} {ra:.4g} %), {b['method']} ({stat} {rb:.4g} %): "
+        f"relative difference {rel:.3g}"
+    )
+    ok = rel <= rel_tol
+    compared = f"{rel:.3g} {'<=' if ok else '>'} {rel_tol:g}"
+    note = f"relative difference {compared}"
+    reason = f"relative difference of the RMS % error ({rank_set.where}) {compared}"
+    cause = None
+    if not ok and same:
+        cause = causes.for_ranking(a["quantity"], None, [b["method"]], [], results)
+    return ClaimResult(
+        "upheld" if ok else "not_upheld", reproduced, tolerance, reason,
+        suffix=rank_set.suffix, notes=() if ok else (note,), cause=cause, **base,
+    )  # fmt: skip
 
 
 @CLAIMS.register(
@@ -119,32 +236,31 @@ def argmax(args: Mapping[str, Any], results: Mapping[str, pd.DataFrame]) -> list
     },
 )
 def close(args: Mapping[str, Any], results: Mapping[str, pd.DataFrame]) -> list[ClaimResult]:
-    """The Monte Carlo RMS of error_pct of a and b differ by at most rel_tol x the larger."""
+    """The RMS % errors of a and b differ by at most rel_tol x the larger, at each N judged."""
     a, b, rel_tol = args["a"], args["b"], float(args["rel_tol"])
-    same = a["quantity"] == b["quantity"]
-    base = {
-        "method": f"{a['method']},{b['method']}",
-        "quantity": a["quantity"] if same else f"{a['quantity']}/{b['quantity']}",
-        "published": f"{a['method']} ~ {b['method']} (within {rel_tol:g} relative)",
-    }
-    tolerance = f"|rms_a - rms_b| <= {rel_tol:g} x max(rms_a, rms_b)"
-    ra = _rms_pct(results["mc_trials"], a["method"], a["quantity"])
-    rb = _rms_pct(results["mc_trials"], b["method"], b["quantity"])
-    if ra is None or rb is None:
-        lacking = [(s["method"], s["quantity"]) for s, r in ((a, ra), (b, rb)) if r is None]
-        reason = "; ".join(_lacking([m], q, "mc_trials.csv") for m, q in lacking)
+    every = rank_sets(results)
+    sets = [
+        rs for rs in every if all(rs.get(s["method"], s["quantity"]) is not None for s in (a, b))
+    ]
+    if not sets:
+        lacking = [
+            (s["method"], s["quantity"])
+            for s in (a, b)
+            if not every or any(rs.get(s["method"], s["quantity"]) is None for rs in every)
+        ]
+        base = {
+            "method": f"{a['method']},{b['method']}",
+            "quantity": a["quantity"]
+            if a["quantity"] == b["quantity"]
+            else f"{a['quantity']}/{b['quantity']}",  # fmt: skip
+            "published": f"{a['method']} ~ {b['method']} (within {rel_tol:g} relative)",
+        }
+        tolerance = f"|rms_a - rms_b| <= {rel_tol:g} x max(rms_a, rms_b)"
+        reason = "; ".join(_lacking([m], q, "the Monte Carlo results") for m, q in lacking)
         return [ClaimResult("not_checkable", "n/a", tolerance, reason, **base)]
-    scale = max(ra, rb)
-    rel = abs(ra - rb) / scale if scale > 0 else 0.0
-    reproduced = (
-        f"{a['method']} (rms {ra:.4g} %), {b['method']} (rms {rb:.4g} %): "
-        f"relative difference {rel:.3g}"
-    )
-    ok = rel <= rel_tol
-    reason = (
-        f"relative difference of the Monte Carlo RMS {rel:.3g} {'<=' if ok else '>'} {rel_tol:g}"
-    )
-    return [ClaimResult("upheld" if ok else "not_upheld", reproduced, tolerance, reason, **base)]
+    out = _summary([_close_one(args, s, results) for s in sets], sets)
+    n_cause = _n_cause(f"{a['method']} ~ {b['method']}", out, sets)
+    return [r if r.cause or r.verdict != "not_upheld" else replace(r, cause=n_cause) for r in out]
 
 
 _SOURCE = {"enum": list(BUDGET_SOURCES)}

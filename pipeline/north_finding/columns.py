@@ -30,6 +30,27 @@ SENSITIVITY_COLUMNS = [
     "n_trials",
 ]
 
+# results/<slug>/<scenario>/ranking.csv: Monte Carlo RMS % error of every method at each
+# averaging count N of the scenario's ranking block (the claims that rank methods are judged
+# at each N), and ranking_pairs.csv: per N and quantity, the paired difference of the squared
+# % errors of two methods over the same trials (its mean and standard error) and their largest
+# per-trial difference (0 where two methods are the same estimator).
+RANKING_COLUMNS = ["n_avg", "method", "quantity", "rms_error_pct", "n_trials"]
+RANKING_PAIR_COLUMNS = [
+    "n_avg",
+    "quantity",
+    "method_a",
+    "method_b",
+    "mean_sq_diff_pct2",
+    "se_sq_diff_pct2",
+    "max_abs_diff_pct",
+    "n_trials",
+]
+
+# results/<slug>/<scenario>/a2_scan.csv: the noise-free real-sensor azimuth of method A2 at
+# every whole-degree table angle (the paper does not give its tau).
+A2_SCAN_COLUMNS = ["tau_deg", "psi_deg", "error_deg"]
+
 LEVELING_METHODS = ("L1", "L2", "L3", "L4", "L5")
 AZIMUTH_METHODS = ("A1c1", "A1c2", "A2", "A3", "A4", "A5", "A6")
 METHODS = LEVELING_METHODS + AZIMUTH_METHODS

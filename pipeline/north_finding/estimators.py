@@ -18,7 +18,7 @@ import numpy as np
 from pipeline.generated import north_finding as gen
 from pipeline.north_finding.readings import Readings
 
-__all__ = ["Site", "estimate_all", "select_nearest", "wrap_pi", "solve_quartic_psi"]
+__all__ = ["Site", "a2_psi", "estimate_all", "select_nearest", "wrap_pi", "solve_quartic_psi"]
 
 Estimates = dict[tuple[str, str], np.ndarray]
 
@@ -145,6 +145,29 @@ def solve_quartic_psi(coeffs47: tuple[np.ndarray, ...], prior: np.ndarray) -> np
     return select_nearest(psi, prior, real)
 
 
+def _two_roots(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
+    """Both roots of a sin(psi) + b cos(psi) = c, (T, 2) in rad."""
+    # clip c to the reachable range so that noise never leaves psi undefined
+    r = np.hypot(a, b)
+    lo, hi = gen.sinusoid_roots(a, b, np.clip(c, -r, r))
+    return np.stack([lo, hi], axis=1)
+
+
+def a2_psi(
+    w: np.ndarray,
+    tau: np.ndarray | float,
+    omega_ie: float,
+    lat: float,
+    theta: np.ndarray,
+    phi: np.ndarray,
+    prior: np.ndarray,
+) -> np.ndarray:
+    """Azimuth method 2 (eqs. 42-43): psi (rad) from the x gyro ``w`` read at table angle
+    ``tau`` (rad); every argument broadcasts, so one call covers many trials or many tau."""
+    a, b, c = gen.a2_coeffs(w, tau, omega_ie, lat, theta, phi)
+    return select_nearest(_two_roots(a, b, c), prior)
+
+
 def azimuth(
     readings: Readings,
     site: Site,
@@ -162,12 +185,6 @@ def azimuth(
     def wx(tau: float, method: str) -> np.ndarray:
         return gyr[:, readings.index("x", tau, method)]
 
-    def two_roots(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
-        # clip c to the reachable range so that noise never leaves psi undefined
-        r = np.hypot(a, b)
-        lo, hi = gen.sinusoid_roots(a, b, np.clip(c, -r, r))
-        return np.stack([lo, hi], axis=1)
-
     def deg(x: np.ndarray) -> np.ndarray:
         return np.rad2deg(x) % 360.0
 
@@ -177,15 +194,14 @@ def azimuth(
         out["A1c1", "psi_deg"] = deg(select_nearest(np.stack([acos, -acos], axis=1), prior))
     if "A1c2" in methods:
         a, b, c = gen.a1c2_coeffs(wx(90, "A1c2"), wx(270, "A1c2"), om, lat, theta, phi)
-        out["A1c2", "psi_deg"] = deg(select_nearest(two_roots(a, b, c), prior))
+        out["A1c2", "psi_deg"] = deg(select_nearest(_two_roots(a, b, c), prior))
     if "A2" in methods:
         if a2_tau_deg is None:
             col = readings.columns("x", "a2")[0]
         else:
             col = readings.index("x", a2_tau_deg, "A2")
         tau = np.deg2rad(readings.tau_deg[col])
-        a, b, c = gen.a2_coeffs(gyr[:, col], tau, om, lat, theta, phi)
-        out["A2", "psi_deg"] = deg(select_nearest(two_roots(a, b, c), prior))
+        out["A2", "psi_deg"] = deg(a2_psi(gyr[:, col], tau, om, lat, theta, phi, prior))
     if "A3" in methods:
         cols = readings.columns("x", "max")
         w_max = gyr[:, cols].max(axis=1)
@@ -197,7 +213,7 @@ def azimuth(
         om1, om2 = gen.a4_omegas(w0, w90, w180, om)
     if "A4" in methods:
         a, b, c = gen.a4_coeffs(om1, om2, lat, theta, phi)
-        psi = select_nearest(two_roots(a, b, c), prior)
+        psi = select_nearest(_two_roots(a, b, c), prior)
         out["A4", "psi_deg"] = deg(psi)
         out["A4", "gyro_bias_rad_s"] = bias
         out["A4", "gyro_scale"] = gen.a4_scale(om1, psi, lat, theta)

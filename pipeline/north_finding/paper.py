@@ -65,6 +65,19 @@ SCENARIO_FILES = (
     "mc_summary.csv",
     "error_budget.csv",
     "sensitivity.csv",
+    "ranking.csv",
+    "ranking_pairs.csv",
+    "a2_scan.csv",
+    "provenance.json",
+)
+#: what the verdicts read from the published scenario's folder
+VERDICT_INPUTS = (
+    "estimates.csv",
+    "mc_trials.csv",
+    "error_budget.csv",
+    "ranking.csv",
+    "ranking_pairs.csv",
+    "a2_scan.csv",
     "provenance.json",
 )
 
@@ -108,9 +121,10 @@ STEPS = (
         "pipeline.north_finding.steps:verdicts",
         inputs=lambda ctx: {
             **ctx.published_inputs,
-            "estimates": _published(ctx, "estimates.csv"),
-            "mc_trials": _published(ctx, "mc_trials.csv"),
-            "error_budget": _published(ctx, "error_budget.csv"),
+            **{f.split(".")[0]: _published(ctx, f) for f in VERDICT_INPUTS},
+            "scenario": ctx.scenario_file(ctx.settings["published_scenario"]),
+            "scenario_schema": SCENARIO_SCHEMA,
+            "audit": f"{ctx.results}/equation_audit.csv",
         },
         outputs=lambda ctx: {"verdicts": f"{ctx.results}/verdicts.csv"},
         report={"verdicts": ("Verdicts", "verdicts")},

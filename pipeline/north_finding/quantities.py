@@ -3,33 +3,51 @@
 An item selects ``{method: <L1..L5, A1c1..A6>, sensor: <ideal|real>}`` (the table's row and
 sensor column). The results of the published scenario are ``estimates.csv`` (one ideal and one
 noise-free real estimate per method and quantity), ``mc_trials.csv`` (the noisy Monte Carlo)
-and ``error_budget.csv`` (for the claims).
+and ``error_budget.csv``, ``ranking.csv``, ``ranking_pairs.csv`` and ``a2_scan.csv`` (for the
+claims and the causes).
 
 * exact items (ideal sensor) -> the ``ideal`` row of estimates.csv: its estimate and % error;
 * statistical items (real sensor) -> the Monte Carlo estimates of mc_trials.csv, with the
-  noise-free ``real`` row of estimates.csv beside them.
+  noise-free ``real`` row of estimates.csv beside them and the test's power in % error;
+* approximate items (a % error the text gives as "about", quantity ``<q>_error_pct``) -> the
+  |% error| of the noise-free ``real`` row of ``<q>``, the Monte Carlo beside it.
+
+A failing row carries its root cause (:func:`pipeline.north_finding.causes.for_item`).
 """
 
 from __future__ import annotations
 
+import json
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pandas as pd
 
 from pipeline.north_finding.columns import (
+    A2_SCAN_COLUMNS,
     ERROR_BUDGET_COLUMNS,
     ESTIMATE_COLUMNS,
     MC_TRIAL_COLUMNS,
     METHOD_QUANTITIES,
     METHODS,
+    RANKING_COLUMNS,
+    RANKING_PAIR_COLUMNS,
     SENSORS,
 )
-from pipeline.verdicts.kinds import Found
+from pipeline.verdicts.kinds import RANK_BAND, Found
 from pipeline.verdicts.published import Problem
 
-__all__ = ["KIND_SENSOR", "QUANTITY_UNITS", "check_item", "locate", "read_results", "rows"]
+__all__ = [
+    "ERROR_QUANTITIES",
+    "KIND_SENSOR",
+    "QUANTITY_UNITS",
+    "check_item",
+    "locate",
+    "read_results",
+    "rows",
+]
 
 #: Unit each quantity is published in (the unit of its results column).
 QUANTITY_UNITS = {
@@ -43,13 +61,23 @@ QUANTITY_UNITS = {
     "gyro_scale": "dimensionless",
     "gyro_scale_approx": "dimensionless",
 }
-#: The sensor column each kind of item is printed in (ideal columns are exact, real ones noisy).
-KIND_SENSOR = {"exact": "ideal", "statistical": "real"}
+#: Item quantities that are the unsigned % error of a results quantity (the text's "about").
+ERROR_QUANTITIES = {"acc_bias_error_pct": "acc_bias_ug"}
+#: The sensor column each kind of item is printed in (ideal columns are exact, real ones noisy;
+#: the text's "about" values are of the real sensor).
+KIND_SENSOR = {"exact": "ideal", "statistical": "real", "approximate": "real"}
 
 RESULT_FILES = {
     "estimates": ("estimates.csv", ESTIMATE_COLUMNS),
     "mc_trials": ("mc_trials.csv", MC_TRIAL_COLUMNS),
     "error_budget": ("error_budget.csv", ERROR_BUDGET_COLUMNS),
+}
+#: Results files the claims and causes read where present (a scenario without a ranking block
+#: writes them empty).
+OPTIONAL_FILES = {
+    "ranking": ("ranking.csv", RANKING_COLUMNS),
+    "ranking_pairs": ("ranking_pairs.csv", RANKING_PAIR_COLUMNS),
+    "a2_scan": ("a2_scan.csv", A2_SCAN_COLUMNS),
 }
 
 
@@ -65,9 +93,11 @@ def check_item(item: Mapping[str, Any]) -> list[Problem]:
     if sensor not in SENSORS:
         problems.append(("select.sensor", sensor, f"one of {list(SENSORS)}"))
     quantity = item["quantity"]
-    if quantity not in QUANTITY_UNITS:
-        problems.append(("quantity", quantity, f"one of {list(QUANTITY_UNITS)}"))
-    elif method in METHODS and quantity not in METHOD_QUANTITIES[method]:
+    units = {**QUANTITY_UNITS, **{q: "%" for q in ERROR_QUANTITIES}}
+    base = ERROR_QUANTITIES.get(quantity, quantity)
+    if quantity not in units:
+        problems.append(("quantity", quantity, f"one of {list(units)}"))
+    elif method in METHODS and base not in METHOD_QUANTITIES[method]:
         problems.append(
             (
                 "quantity",
@@ -76,9 +106,19 @@ def check_item(item: Mapping[str, Any]) -> list[Problem]:
             )
         )
     kind = item["kind"]
-    if kind not in KIND_SENSOR:
+    approximate_ok = kind != "approximate" or quantity in ERROR_QUANTITIES
+    if kind not in KIND_SENSOR or not approximate_ok:
         problems.append(
-            ("kind", kind, f"one of {list(KIND_SENSOR)} (the paper prints no approximate value)")
+            (
+                "kind",
+                kind,
+                f"exact or statistical for {quantity} (approximate only for the 'about' % "
+                f"errors {list(ERROR_QUANTITIES)})",
+            )
+        )
+    elif (kind == "approximate") != (quantity in ERROR_QUANTITIES):
+        problems.append(
+            ("quantity", quantity, f"one of {list(ERROR_QUANTITIES)} for kind {kind!r}")
         )
     elif sensor in SENSORS and sensor != KIND_SENSOR[kind]:
         problems.append(
@@ -89,10 +129,8 @@ def check_item(item: Mapping[str, Any]) -> list[Problem]:
                 "(exact items are ideal-sensor, statistical items real-sensor)",
             )
         )
-    if quantity in QUANTITY_UNITS and item.get("unit") != QUANTITY_UNITS[quantity]:
-        problems.append(
-            ("unit", item.get("unit"), f"{QUANTITY_UNITS[quantity]!r}, the unit of {quantity}")
-        )
+    if quantity in units and item.get("unit") != units[quantity]:
+        problems.append(("unit", item.get("unit"), f"{units[quantity]!r}, the unit of {quantity}"))
     if item.get("error_pct") is not None and float(item["error_pct"]) < 0:
         problems.append(("error_pct", item["error_pct"], "an unsigned % error (>= 0), as printed"))
     return problems
@@ -105,14 +143,32 @@ def _check_frame(frame: pd.DataFrame, columns: list[str], name: str) -> pd.DataF
     return frame
 
 
-def read_results(scenario_dir: str | Path) -> dict[str, pd.DataFrame]:
-    """estimates.csv, mc_trials.csv and error_budget.csv of the published scenario's folder."""
-    out: dict[str, pd.DataFrame] = {}
+def read_results(
+    scenario_dir: str | Path,
+    *,
+    scenario: Any = None,
+    audit: str | Path | None = None,
+    published: Mapping[str, Any] | None = None,
+) -> dict[str, Any]:
+    """The published scenario's folder: estimates.csv, mc_trials.csv and error_budget.csv
+    (required), ranking.csv, ranking_pairs.csv, a2_scan.csv and provenance.json (where
+    present); with the scenario (its decisions), the equation audit and the published file,
+    which the causes of failing rows cite."""
+    out: dict[str, Any] = {}
     for key, (filename, columns) in RESULT_FILES.items():
         path = Path(scenario_dir) / filename
         if not path.is_file():
             raise ValueError(f"{path}: results file not found (expected columns {columns})")
         out[key] = _check_frame(pd.read_csv(path), columns, str(path))
+    for key, (filename, columns) in OPTIONAL_FILES.items():
+        path = Path(scenario_dir) / filename
+        frame = pd.read_csv(path) if path.is_file() else pd.DataFrame(columns=columns)
+        out[key] = _check_frame(frame, columns, str(path))
+    prov = Path(scenario_dir) / "provenance.json"
+    out["provenance"] = json.loads(prov.read_text(encoding="utf-8")) if prov.is_file() else {}
+    out["scenario"] = scenario
+    out["audit"] = pd.read_csv(audit, dtype=str) if audit is not None else None
+    out["published"] = published
     return out
 
 
@@ -131,8 +187,21 @@ def _estimate(estimates: pd.DataFrame, sensor: str, method: str, quantity: str) 
     return None if found.empty else found.iloc[0]
 
 
-def locate(item: Mapping[str, Any], results: Mapping[str, pd.DataFrame]) -> list[Found]:
+def _power(sample: np.ndarray, truth: float, published: float) -> str:
+    """The statistical test's power in % error: the band of errors it accepts."""
+    lo, hi = 100.0 * (np.percentile(sample, RANK_BAND) - truth) / abs(truth)
+    implied = 100.0 * (published - truth) / abs(truth)
+    ratio = f", {(hi - lo) / abs(implied):.3g} times the published |error|" if implied else ""
+    return (
+        f"power: the rank band accepts any error from {lo:+.4g} % to {hi:+.4g} %{ratio} "
+        f"(the published value implies {implied:+.4g} %)"
+    )
+
+
+def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
     """What the results hold for one published item (one row)."""
+    from pipeline.north_finding.causes import for_item
+
     method, quantity = item["select"]["method"], item["quantity"]
     estimates, trials = results["estimates"], results["mc_trials"]
     if item["kind"] == "exact":
@@ -153,6 +222,9 @@ def locate(item: Mapping[str, Any], results: Mapping[str, pd.DataFrame]) -> list
                 truth=float(row["truth"]),
             )
         ]
+    cause = for_item(item, results)
+    if item["kind"] == "approximate":
+        return [_approximate(item, results, cause)]
     mc = rows(trials, method, quantity)
     if mc.empty:
         return [
@@ -163,12 +235,36 @@ def locate(item: Mapping[str, Any], results: Mapping[str, pd.DataFrame]) -> list
             )
         ]
     real = _estimate(estimates, "real", method, quantity)
+    sample = mc["estimate"].to_numpy(dtype=float)
+    truth = float(mc["truth"].iloc[0])
+    power = (_power(sample, truth, float(item["value"])),) if truth else ()
     return [
         Found(
             method=method,
-            samples=mc["estimate"].to_numpy(dtype=float),
+            samples=sample,
             noise_free=None if real is None else float(real["estimate"]),
             noise_free_error_pct=None if real is None else float(real["error_pct"]),
-            truth=float(mc["truth"].iloc[0]),
+            truth=truth,
+            notes=power,
+            cause=cause,
         )
     ]
+
+
+def _approximate(item: Mapping[str, Any], results: Mapping[str, Any], cause: Any) -> Found:
+    """An 'about' % error: ours is the |% error| of the noise-free real row."""
+    method, base = item["select"]["method"], ERROR_QUANTITIES[item["quantity"]]
+    real = _estimate(results["estimates"], "real", method, base)
+    if real is None:
+        return Found(
+            method=method,
+            missing=f"no real row for method {method}, quantity {base} in estimates.csv",
+        )
+    notes = [f"ours: the |% error| of the noise-free real {base} ({float(real['estimate']):.6g})"]
+    mc = rows(results["mc_trials"], method, base)["error_pct"].abs()
+    if not mc.empty:
+        p05, p50, p95 = np.percentile(mc.to_numpy(float), [5.0, 50.0, 95.0])
+        notes.append(f"Monte Carlo |% error| median {p50:.4g} % [5-95 %: {p05:.4g}, {p95:.4g}]")
+    return Found(
+        method=method, value=abs(float(real["error_pct"])), notes=tuple(notes), cause=cause
+    )

@@ -42,6 +42,7 @@ __all__ = [
     "load_readings_csv",
     "simulation_positions",
     "simulate",
+    "noise_free_gyro",
     "layout",
     "standard_normals",
     "check_needs",
@@ -242,6 +243,13 @@ def _sense(vec_b: np.ndarray, axis: np.ndarray, err: SensorErrors) -> np.ndarray
             + err.bias
         )
     return out
+
+
+def noise_free_gyro(sc: Scenario, gyro: SensorErrors, tau_deg: np.ndarray, axis: str) -> np.ndarray:
+    """Noise-free reading of the gyro (errors ``gyro``) on ``axis`` at each table angle, (P,)."""
+    tau_deg = np.asarray(tau_deg, dtype=float)
+    _, w_b = _true_vectors(sc, tau_deg)
+    return _sense(w_b, np.full(tau_deg.size, axis), gyro)
 
 
 def standard_normals(seed: int, scenario_key: int, n_trials: int, n_positions: int) -> np.ndarray:

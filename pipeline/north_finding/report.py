@@ -119,8 +119,10 @@ def _summary(
             f"{_spelled(vc)}. The equation audit checked {len(audit)} printed equations against "
             f"the SymPy derivation: {_spelled(ac)}. Where a printed equation differs, the "
             "pipeline uses the derived one. Verdict rules: exact (ideal sensor, equal to the "
-            "printed precision), statistical (where the published value falls in the Monte "
-            "Carlo distribution), claim (a predicate over results)."
+            "printed precision), approximate (a value the text gives as 'about', within its "
+            "stated tolerance), statistical (where the published value falls in the Monte "
+            "Carlo distribution), claim (a predicate over results, judged at each averaging "
+            "count N where it ranks methods)."
         )
     ]
     extra = [v for v in vc.index if v not in VERDICTS]
@@ -235,24 +237,37 @@ def _tables(items: pd.DataFrame, verdicts: pd.DataFrame) -> Section:
     )
 
 
+def _claim_rows(claims: pd.DataFrame, verdicts: pd.DataFrame) -> pd.DataFrame:
+    """One row per verdict row of each claim (``<claim id>/<suffix>``: one per N judged), in
+    the published file's order; a claim without a verdict row appears once as "missing"."""
+    rows = []
+    base = verdicts["id"].astype(str).str.split("/").str[0]
+    for _, claim in claims.iterrows():
+        meta = claim.to_dict()
+        meta["note_claim"] = meta.pop("note", None)
+        mine = verdicts[base == str(claim["id"])]
+        if mine.empty:
+            rows.append({**meta, "verdict": "missing", "reproduced": "",
+                         "note": "no verdict in verdicts.csv"})  # fmt: skip
+        for _, row in mine.iterrows():
+            rows.append({**meta, **row.to_dict()})
+    return pd.DataFrame(rows)
+
+
 def _claims(claims: pd.DataFrame, items: pd.DataFrame, verdicts: pd.DataFrame) -> Section:
     v = verdicts.drop_duplicates("id", keep="first").set_index("id")
     blocks: list[Block] = []
     subs: list[Section] = []
     if len(claims):
-        reading = (
-            claims["note"] if "note" in claims.columns else pd.Series(None, index=claims.index)
-        )
-        c = claims.assign(
-            predicate=claims["predicate"].map(render_value),
+        c = _claim_rows(claims, verdicts)
+        reading = c["note_claim"] if "note_claim" in c.columns else pd.Series(None, index=c.index)
+        c = c.assign(
+            predicate=c["predicate"].map(render_value),
             reading=reading.map(lambda x: "" if x is None or pd.isna(x) else str(x)),
-            verdict=claims["id"].map(v["verdict"]).fillna("missing"),
-            reproduced=claims["id"].map(v["reproduced"]).fillna(""),
-            note=claims["id"].map(v["note"]).fillna("no verdict in verdicts.csv"),
         )
         cols = ["id", "text", "source", "reading", "predicate", "reproduced", "verdict", "note"]
-        extra = [c for c in VERDICT_EXTRA_COLUMNS if c in v.columns]  # where recorded
-        c = c.assign(**{k: claims["id"].map(v[k]).fillna("") for k in extra})
+        extra = [k for k in VERDICT_EXTRA_COLUMNS if k in v.columns]  # where recorded
+        c = c.assign(**{k: c[k].fillna("") if k in c.columns else "" for k in extra})
         cols += extra
         if not c["reading"].astype(bool).any():
             cols.remove("reading")
@@ -266,7 +281,7 @@ def _claims(claims: pd.DataFrame, items: pd.DataFrame, verdicts: pd.DataFrame) -
     else:
         blocks.append(not_available("Claims in the published values file"))
     known = set(items["id"].astype(str)) | set(claims["id"].astype(str))
-    orphans = verdicts[~verdicts["id"].astype(str).isin(known)]
+    orphans = verdicts[~verdicts["id"].astype(str).str.split("/").str[0].isin(known)]
     if len(orphans):
         subs.append(
             Section(
@@ -321,6 +336,9 @@ def report(inputs: ReportInputs) -> PaperReport:
     """The paper's report sections, built from ``inputs`` (see the module docstring)."""
     results = inputs.results
     items, claims = load_published(inputs.published)
+    # only a "Table N" label names a table (the text's "Sec. 5-2-2" is no Table 5)
+    numbers = items["table"].astype(str).str.extract(r"^Table (\d+)$")[0]
+    items = items.assign(table_no=pd.to_numeric(numbers, errors="coerce").astype(float))
     verdicts = _require(
         read_csv(results / "verdicts.csv", VERDICT_COLUMNS, as_text=True),
         results / "verdicts.csv",

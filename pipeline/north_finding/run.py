@@ -8,6 +8,10 @@ Writes, under ``results/north_finding/<scenario>/`` (columns in pipeline/columns
 * ``error_budget.csv``: the noise-free error with one error source at a time, and
   the Monte Carlo standard deviation as the 'noise' source;
 * ``sensitivity.csv``: Monte Carlo RMS error against the averaging count N;
+* ``ranking.csv`` and ``ranking_pairs.csv``: the Monte Carlo at each N of the scenario's
+  ``ranking`` block, for the claims that rank methods (:mod:`pipeline.north_finding.ranking`);
+* ``a2_scan.csv``: the noise-free real-sensor azimuth of method A2 at every whole-degree
+  table angle (the paper does not give its tau);
 * ``provenance.json``: code version, config hash, packages, seeds.
 
 Ideal sensor: no misalignment and no noise; the scale factor and bias are those of
@@ -34,6 +38,7 @@ from pipeline.atomic import write_csv, write_json
 from pipeline.north_finding import columns as col
 from pipeline.north_finding import estimators as est
 from pipeline.north_finding import readings as rd
+from pipeline.north_finding.ranking import ranking_frames
 from pipeline.north_finding.scenario import ROOT, Scenario, load_scenario
 
 __all__ = ["run_scenario", "truth_values", "estimates_frame", "main"]
@@ -237,13 +242,57 @@ def _simulated(sc: Scenario, log) -> dict[str, pd.DataFrame]:
                 )
             log(f"{sc.name}: sensitivity {i + 1}/{len(sc.sensitivity['n_avg'])} (N = {n_avg})")
     sensitivity = pd.DataFrame(sens_rows, columns=col.SENSITIVITY_COLUMNS)
+    ranking, pairs = _ranking(sc, runner, truth, normals, key, n_pos)
+    if sc.ranking:
+        log(f"{sc.name}: ranking Monte Carlo at N = {sc.ranking['n_avg']}")
     return {
         "estimates": estimates,
         "mc_trials": trials,
         "mc_summary": summary,
         "error_budget": budget,
         "sensitivity": sensitivity,
+        "ranking": ranking,
+        "ranking_pairs": pairs,
+        "a2_scan": _a2_scan(sc, runner),
     }
+
+
+def _ranking(sc: Scenario, runner: _Runner, truth, normals, key: int, n_pos: int):
+    """ranking.csv and ranking_pairs.csv: the Monte Carlo at every N of ``sc.ranking``, on the
+    main Monte Carlo's normals when the trial counts agree (so its N reproduces mc_trials)."""
+    if not sc.ranking:
+        return _empty("ranking"), _empty("ranking_pairs")
+    n_trials = int(sc.ranking["n_trials"])
+    z = normals if n_trials == sc.n_trials else rd.standard_normals(sc.seed, key, n_trials, n_pos)
+    return ranking_frames(
+        lambda n: runner.run((), z, n),
+        lambda v, q: _error_pct(v, truth[q], q),
+        sc.ranking["n_avg"],
+    )
+
+
+#: The table angles of the method-2 scan (deg).
+A2_SCAN_TAU_DEG = np.arange(0.0, 360.0, 1.0)
+
+
+def _a2_scan(sc: Scenario, runner: _Runner) -> pd.DataFrame:
+    """Noise-free real-sensor azimuth of method A2 at every tau of :data:`A2_SCAN_TAU_DEG`."""
+    if "A2" not in sc.methods:
+        return _empty("a2_scan")
+    tau = A2_SCAN_TAU_DEG
+    w = rd.noise_free_gyro(sc, sc.gyro.without("noise"), tau, "x")
+    theta, phi = runner.truth_level
+    prior = np.full(tau.size, runner.psi + sc.compass_offset)
+    with np.errstate(invalid="ignore"):
+        psi = est.a2_psi(w, np.deg2rad(tau), sc.omega_ie, sc.lat, theta, phi, prior)
+    psi_deg = np.rad2deg(psi) % 360.0
+    return pd.DataFrame(
+        {
+            "tau_deg": tau,
+            "psi_deg": psi_deg,
+            "error_deg": _difference(psi_deg, np.rad2deg(runner.psi) % 360.0, "psi_deg"),
+        }
+    )[col.A2_SCAN_COLUMNS]
 
 
 def _readings(sc: Scenario, log) -> dict[str, pd.DataFrame]:
@@ -257,13 +306,9 @@ def _readings(sc: Scenario, log) -> dict[str, pd.DataFrame]:
         readings, site, sc.methods, sc.level_source, level, np.array([sc.compass_heading]), a2_tau
     )
     log(f"{sc.name}: estimated from {sc.readings_csv.name} ({readings.tau_deg.size} positions)")
-    return {
-        "estimates": estimates_frame(out, truth, "real"),
-        "mc_trials": pd.DataFrame(columns=col.MC_TRIAL_COLUMNS),
-        "mc_summary": pd.DataFrame(columns=col.MC_SUMMARY_COLUMNS),
-        "error_budget": pd.DataFrame(columns=col.ERROR_BUDGET_COLUMNS),
-        "sensitivity": pd.DataFrame(columns=col.SENSITIVITY_COLUMNS),
-    }
+    frames = {k: _empty(k) for k in OUTPUTS}
+    frames["estimates"] = estimates_frame(out, truth, "real")
+    return frames
 
 
 OUTPUTS = {
@@ -272,7 +317,14 @@ OUTPUTS = {
     "mc_summary": ("mc_summary.csv", col.MC_SUMMARY_COLUMNS),
     "error_budget": ("error_budget.csv", col.ERROR_BUDGET_COLUMNS),
     "sensitivity": ("sensitivity.csv", col.SENSITIVITY_COLUMNS),
+    "ranking": ("ranking.csv", col.RANKING_COLUMNS),
+    "ranking_pairs": ("ranking_pairs.csv", col.RANKING_PAIR_COLUMNS),
+    "a2_scan": ("a2_scan.csv", col.A2_SCAN_COLUMNS),
 }
+
+
+def _empty(key: str) -> pd.DataFrame:
+    return pd.DataFrame(columns=OUTPUTS[key][1])
 
 
 def run_scenario(

@@ -95,6 +95,7 @@ class Scenario:
     seed: int | None
     sensitivity: dict[str, Any] | None
     readings_csv: Path | None
+    ranking: dict[str, Any] | None = None
 
     @property
     def config_sha256(self) -> str:
@@ -166,6 +167,7 @@ def build_scenario(raw: Any, path: Path, base: Path = ROOT) -> Scenario:
         seed=raw.get("monte_carlo", {}).get("seed"),
         sensitivity=raw.get("sensitivity"),
         readings_csv=(base / raw["readings_csv"]) if "readings_csv" in raw else None,
+        ranking=raw.get("ranking"),
     )
     _check_semantics(sc)
     sc.decisions()  # every decision names a real field
@@ -195,6 +197,10 @@ def _check_semantics(sc: Scenario) -> None:
                     f"{sc.path}: table.ls_positions_deg has {n_ls} positions, but method {m} "
                     f"(least squares, eqs. 21/26) needs at least {MIN_LS_POSITIONS}"
                 )
+        if sc.ranking is not None and sc.n_trials is None:
+            raise ConfigError(
+                f"{sc.path}: ranking needs monte_carlo (its seed): add a monte_carlo block"
+            )
         ms = sc.table["max_search"]
         if ms["mode"] == "scan" and "step_deg" not in ms:
             raise ConfigError(

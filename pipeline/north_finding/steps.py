@@ -23,6 +23,10 @@ def verdicts(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) 
     from pipeline.north_finding.verdicts import write_verdicts
 
     frame = write_verdicts(
-        inputs["published"], Path(inputs["estimates"]).parent, outputs["verdicts"]
+        inputs["published"],
+        Path(inputs["estimates"]).parent,
+        outputs["verdicts"],
+        scenario=inputs["scenario"],
+        audit=inputs["audit"],
     )
     log(frame["verdict"].value_counts().to_string())

@@ -1,15 +1,19 @@
 """Verdicts of the north-finding paper: its published tables and claims vs our results.
 
 Reads ``config/published/north_finding.yaml`` and, in the published scenario's folder
-(``results/north_finding/<published_scenario>/``), ``estimates.csv``, ``mc_trials.csv`` and
-``error_budget.csv``; writes ``results/north_finding/verdicts.csv``. The rules are the shared
+(``results/north_finding/<published_scenario>/``), ``estimates.csv``, ``mc_trials.csv``,
+``error_budget.csv``, ``ranking.csv``, ``ranking_pairs.csv``, ``a2_scan.csv`` and
+``provenance.json``, with the scenario file and the equation audit (which the causes of
+failing rows cite); writes ``results/north_finding/verdicts.csv``. The rules are the shared
 engine's (:mod:`pipeline.verdicts`); this module only binds the paper's locator
 (:mod:`pipeline.north_finding.quantities`) and claim tests (:mod:`pipeline.north_finding.claims`).
 
 Command line::
 
     python -m pipeline.north_finding.verdicts --published config/published/north_finding.yaml \\
-        --results-dir results/north_finding/paper --out results/north_finding/verdicts.csv
+        --results-dir results/north_finding/paper --out results/north_finding/verdicts.csv \\
+        --scenario config/scenarios/north_finding/paper.yaml \\
+        --audit results/north_finding/equation_audit.csv
 """
 
 from __future__ import annotations
@@ -34,19 +38,36 @@ def load_published(path: str | Path) -> dict:
 
 
 def write_verdicts(
-    published_path: str | Path, results_dir: str | Path, out_path: str | Path
+    published_path: str | Path,
+    results_dir: str | Path,
+    out_path: str | Path,
+    scenario: str | Path | None = None,
+    audit: str | Path | None = None,
 ) -> pd.DataFrame:
     """Judge every published number and claim; write ``out_path`` atomically.
 
     ``results_dir`` is the published scenario's folder (estimates.csv, mc_trials.csv,
-    error_budget.csv). The published file is validated before any results file is read.
+    error_budget.csv, and the ranking files where present); ``scenario`` its scenario file and
+    ``audit`` the equation audit, cited by the causes of failing rows (optional). The published
+    file is validated before any results file is read.
     """
+
+    def read() -> dict:
+        from pipeline.north_finding.scenario import load_scenario
+
+        return read_results(
+            results_dir,
+            scenario=load_scenario(scenario) if scenario is not None else None,
+            audit=audit,
+            published=load_published(published_path),
+        )
+
     return engine.write_verdicts(
         published_path,
         out_path,
         locate=locate,
         claims=CLAIMS,
-        read_results=lambda: read_results(results_dir),
+        read_results=read,
         check_item=check_item,
     )
 
@@ -59,8 +80,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--published", default="config/published/north_finding.yaml")
     parser.add_argument("--results-dir", default="results/north_finding/paper")
     parser.add_argument("--out", default="results/north_finding/verdicts.csv")
+    parser.add_argument("--scenario", default=None, help="the published scenario's file")
+    parser.add_argument("--audit", default=None, help="equation_audit.csv")
     args = parser.parse_args(argv)
-    table = write_verdicts(args.published, args.results_dir, args.out)
+    table = write_verdicts(args.published, args.results_dir, args.out, args.scenario, args.audit)
     print(f"{args.out}: {len(table)} verdicts {table['verdict'].value_counts().to_dict()}")
     return 0
 

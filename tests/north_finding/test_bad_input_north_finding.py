@@ -72,6 +72,8 @@ SCENARIO_CASES = [
         ["site", "altitude_m", "allowed keys", "lat_deg"],
     ),
     ("wrong_type", "monte_carlo.n_trials", "many", ["monte_carlo.n_trials", "'many'", "integer"]),
+    ("ranking_n_zero", "ranking.n_avg", [0, 100], ["ranking.n_avg", "0", ">= 1"]),
+    ("ranking_one_trial", "ranking.n_trials", 1, ["ranking.n_trials", "1", ">= 2"]),
     ("bad_level_source", "level_source", "L9", ["level_source", "'L9'", "truth", "L1", "L4"]),
     (
         "scan_without_step",

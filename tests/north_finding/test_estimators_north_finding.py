@@ -36,7 +36,7 @@ from pipeline.generated import north_finding as gen
 from pipeline.north_finding import columns as col
 from pipeline.north_finding import estimators as est
 from pipeline.north_finding import readings as rd
-from pipeline.north_finding.run import run_scenario
+from pipeline.north_finding.run import OUTPUTS, run_scenario
 from pipeline.north_finding.scenario import ROOT, Scenario, load_scenario
 
 PAPER = ROOT / "config" / "scenarios" / "north_finding" / "paper.yaml"
@@ -322,6 +322,7 @@ def _small_paper(directory: Path, n_trials: int, **changes) -> Path:
     raw = yaml.safe_load(PAPER.read_text(encoding="utf-8"))
     raw["monte_carlo"]["n_trials"] = n_trials
     raw["sensitivity"] = {"n_avg": [10_000, 1_000_000], "n_trials": 20}
+    raw["ranking"] = {"n_avg": [100, raw["averaging"]["n_samples"]], "n_trials": n_trials}
     raw.update(changes)
     directory.mkdir(parents=True, exist_ok=True)
     path = directory / "paper.yaml"  # same name: same scenario key, same seeds
@@ -346,16 +347,7 @@ def mc_runs(tmp_path_factory):
 
 def test_two_runs_are_byte_identical(mc_runs):
     names = sorted(p.name for p in (mc_runs / "run_a").iterdir())
-    assert names == sorted(
-        [
-            "estimates.csv",
-            "mc_trials.csv",
-            "mc_summary.csv",
-            "error_budget.csv",
-            "sensitivity.csv",
-            "provenance.json",
-        ]
-    )
+    assert names == sorted([name for name, _ in OUTPUTS.values()] + ["provenance.json"])
     for name in names:
         assert (mc_runs / "run_a" / name).read_bytes() == (mc_runs / "run_b" / name).read_bytes(), (
             name
@@ -385,6 +377,40 @@ def test_provenance_records_seed_and_config_hash(mc_runs, paper):
     prov20 = json.loads((mc_runs / "run_20" / "provenance.json").read_text())
     assert prov20["config_sha256"] != prov["config_sha256"]
     assert prov20["scenario_key"] == prov["scenario_key"]
+
+
+def test_ranking_at_the_scenario_n_reproduces_the_monte_carlo(mc_runs, paper):
+    """ranking.csv runs on the main Monte Carlo's normals: at the scenario's N its RMS is the
+    RMS of mc_trials.csv; at a smaller N the noise, and so the RMS, is larger."""
+    ranking = pd.read_csv(mc_runs / "run_a" / "ranking.csv")
+    trials = pd.read_csv(mc_runs / "run_a" / "mc_trials.csv")
+    rms = trials.groupby(["method", "quantity"])["error_pct"].apply(
+        lambda e: np.sqrt(np.mean(e**2))
+    )
+    at_n = ranking[ranking["n_avg"] == paper.n_samples].set_index(["method", "quantity"])
+    assert len(at_n) == len(rms) and (at_n["n_trials"] == 50).all()
+    np.testing.assert_allclose(at_n["rms_error_pct"].sort_index(), rms.sort_index(), rtol=1e-12)
+    small = ranking[ranking["n_avg"] == 100].set_index(["method", "quantity"])["rms_error_pct"]
+    assert (small.loc[at_n.index] > at_n["rms_error_pct"]).all()
+
+
+def test_ranking_pairs_are_paired_over_the_same_trials(mc_runs):
+    """A4 and A5 are one estimator: equal on every trial; L1 and L3 are not."""
+    pairs = pd.read_csv(mc_runs / "run_a" / "ranking_pairs.csv").set_index(["n_avg", "quantity", "method_a", "method_b"])  # fmt: skip
+    same = pairs.loc[(100, "gyro_scale", "A4", "A5")]
+    assert same["max_abs_diff_pct"] < 1e-10 and abs(same["mean_sq_diff_pct2"]) < 1e-12
+    other = pairs.loc[(100, "phi_deg", "L1", "L3")]
+    assert other["max_abs_diff_pct"] > 0.01 and other["se_sq_diff_pct2"] > 0
+
+
+def test_a2_scan_contains_the_scenario_tau(mc_runs):
+    """a2_scan.csv: the noise-free method-2 azimuth at every whole degree; at the scenario's
+    tau it is the noise-free real estimate of estimates.csv."""
+    scan = pd.read_csv(mc_runs / "run_a" / "a2_scan.csv").set_index("tau_deg")
+    est_ = pd.read_csv(mc_runs / "run_a" / "estimates.csv")
+    real = est_[(est_["sensor"] == "real") & (est_["method"] == "A2")]["estimate"].iloc[0]
+    assert len(scan) == 360 and scan["psi_deg"].notna().all()
+    assert scan.loc[45.0, "psi_deg"] == pytest.approx(real, abs=1e-12)
 
 
 # --------------------------------------------------------------------------------------------

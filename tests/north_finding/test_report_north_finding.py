@@ -772,3 +772,28 @@ def test_tolerance_and_reason_shown_where_verdicts_csv_has_them(built, tmp_path)
     assert "<th>tolerance</th><th>reason</th>" in text
     assert "<td>tol 0</td><td>a reason</td>" in text
     assert "<th>tolerance</th>" not in built["out"].read_text(encoding="utf-8")
+
+
+def test_a_claim_judged_at_several_n_shows_one_row_per_n():
+    """Claim rows ``<claim id>/N=...`` are the claim's rows (not orphans); a claim without a
+    verdict row shows once as missing; the claim's own note is its reading."""
+    from pipeline.north_finding.report import _claim_rows
+
+    claims = pd.DataFrame(
+        [
+            {"id": "C1", "text": "t1", "source": "s", "note": "reading", "predicate": {}},
+            {"id": "C2", "text": "t2", "source": "s", "note": None, "predicate": {}},
+        ]
+    )
+    verdicts = pd.DataFrame(
+        {
+            "id": ["C1/N=1", "C1/noise-free", "C10"],
+            "verdict": ["not_upheld", "upheld", "upheld"],
+            "reproduced": ["a", "b", "c"],
+            "note": ["n1", "n2", "n3"],
+        }
+    )
+    rows = _claim_rows(claims, verdicts)
+    assert list(rows["id"]) == ["C1/N=1", "C1/noise-free", "C2"]
+    assert list(rows["verdict"]) == ["not_upheld", "upheld", "missing"]
+    assert list(rows["note"])[:2] == ["n1", "n2"] and rows["note_claim"].iloc[0] == "reading"
