@@ -1,17 +1,11 @@
-# Snakemake script: execute a notebook and export it to HTML (outputs embedded, no network).
+# Snakemake script: execute a notebook and export it as one self-contained HTML page (mathematics
+# as MathML, figures as data URIs, no script or network resource, the same bytes every run; see
+# pipeline/notebook_html.py).
 import sys
 
-import nbformat
-from nbclient import NotebookClient
-from nbconvert import HTMLExporter
-
 from pipeline.atomic import write_text
+from pipeline.notebook_html import build
 
 with open(snakemake.log[0], "w") as log:  # noqa: F821
     sys.stderr = log
-    nb = nbformat.read(snakemake.input.notebook, as_version=4)  # noqa: F821
-    NotebookClient(
-        nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": "."}}
-    ).execute()
-    body, _ = HTMLExporter(embed_images=True).from_notebook_node(nb)
-    write_text(snakemake.output[0], body)  # noqa: F821
+    write_text(snakemake.output[0], build(snakemake.input.notebook))  # noqa: F821

@@ -14,23 +14,18 @@ Checks: the HTML parses (balanced elements, well-formed MathML), every ``#id`` l
 resolves, every relative href exists beside the report, every image is a data URI and
 nothing refers to a network; the scoreboard counts equal counts computed here with pandas
 from verdicts.csv and equation_audit.csv; and headless Chromium (``/usr/bin/chromium``, the
-DevTools protocol over a pipe) loads the file with no console error, exception or failed
-load, and writes a screenshot of the scoreboard to ``results/reproduction_scoreboard.png``.
+DevTools protocol over a pipe: tests/browser_harness.py) loads the file with no console error,
+exception or failed load, and writes a screenshot of the scoreboard to
+``results/reproduction_scoreboard.png``.
 """
 
 from __future__ import annotations
 
 import base64
 import dataclasses
-import fcntl
 import json
-import os
 import re
-import select
 import shutil
-import subprocess
-import tempfile
-import time
 import xml.etree.ElementTree as ET
 from html.parser import HTMLParser
 from pathlib import Path
@@ -42,10 +37,10 @@ import yaml
 from pipeline.report import html as H
 from pipeline.report.document import Document, build_document
 from pipeline.report.reproduction_html import render_html, write_html
+from tests.browser_harness import chromium_load, needs_chromium
 from tests.workflow_harness import NEEDS_RUN
 
 ROOT = Path(__file__).resolve().parents[2]
-CHROMIUM = Path("/usr/bin/chromium")
 SCREENSHOT = ROOT / "results" / "reproduction_scoreboard.png"
 SLUGS = yaml.safe_load((ROOT / "config" / "config.yaml").read_text(encoding="utf-8"))["papers"]
 VOID = {"area", "base", "br", "col", "embed", "hr", "img", "input", "link", "meta", "source",
@@ -461,152 +456,6 @@ def test_line_names_the_failures():
 
 
 # --------------------------------------------------------------------------- 3. the browser
-
-
-def _child_fds(read_fd: int, write_fd: int) -> None:
-    hi_r = fcntl.fcntl(read_fd, fcntl.F_DUPFD, 10)
-    hi_w = fcntl.fcntl(write_fd, fcntl.F_DUPFD, 10)
-    os.dup2(hi_r, 3)
-    os.dup2(hi_w, 4)
-
-
-def chromium_load(url: str, screenshot: Path | None = None, timeout: float = 90.0) -> list[str]:
-    """Load ``url`` in headless Chromium driven over the DevTools pipe (fds 3 and 4);
-    return its console errors/warnings, uncaught exceptions and failed loads, and save a
-    PNG of the top of the page down to the end of ``#scoreboard`` to ``screenshot``."""
-    to_chrome_r, to_chrome_w = os.pipe()
-    from_chrome_r, from_chrome_w = os.pipe()
-    with tempfile.TemporaryDirectory() as profile:
-        proc = subprocess.Popen(
-            [
-                str(CHROMIUM),
-                "--headless",
-                "--no-sandbox",
-                "--disable-gpu",
-                "--disable-quic",
-                "--no-first-run",
-                "--disable-background-networking",
-                "--disable-component-update",
-                "--disable-sync",
-                f"--user-data-dir={profile}",
-                "--hide-scrollbars",
-                "--remote-debugging-pipe",
-                "about:blank",
-            ],  # fmt: skip
-            stdin=subprocess.DEVNULL,
-            stdout=subprocess.DEVNULL,
-            stderr=subprocess.DEVNULL,
-            close_fds=False,
-            preexec_fn=lambda: _child_fds(to_chrome_r, from_chrome_w),
-        )
-        os.close(to_chrome_r)
-        os.close(from_chrome_w)
-        buf = b""
-        next_id = 0
-        events: list[dict] = []
-        deadline = time.monotonic() + timeout
-
-        def send(method: str, params: dict | None = None, session: str | None = None) -> int:
-            nonlocal next_id
-            next_id += 1
-            msg = {"id": next_id, "method": method, "params": params or {}}
-            if session:
-                msg["sessionId"] = session
-            os.write(to_chrome_w, json.dumps(msg).encode() + b"\0")
-            return next_id
-
-        def wait(pred, until: float) -> dict:
-            nonlocal buf
-            while True:
-                while b"\0" in buf:
-                    raw, buf = buf.split(b"\0", 1)
-                    msg = json.loads(raw)
-                    if "method" in msg:
-                        events.append(msg)
-                    if pred(msg):
-                        return msg
-                if time.monotonic() > until:
-                    raise TimeoutError("no answer from chromium")
-                ready, _, _ = select.select([from_chrome_r], [], [], 0.2)
-                if ready:
-                    chunk = os.read(from_chrome_r, 1 << 22)
-                    if not chunk:
-                        raise RuntimeError("chromium closed the DevTools pipe")
-                    buf += chunk
-
-        def call(method: str, params: dict | None = None, session: str | None = None) -> dict:
-            i = send(method, params, session)
-            reply = wait(lambda m: m.get("id") == i, deadline)
-            assert "error" not in reply, reply
-            return reply.get("result", {})
-
-        try:
-            target = call("Target.createTarget", {"url": "about:blank"})["targetId"]
-            sid = call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
-            for method in ("Runtime.enable", "Log.enable", "Page.enable"):
-                call(method, session=sid)
-            call(
-                "Emulation.setDeviceMetricsOverride",
-                {"width": 1400, "height": 1000, "deviceScaleFactor": 1, "mobile": False},
-                session=sid,
-            )
-            call("Page.navigate", {"url": url}, session=sid)
-            wait(lambda m: m.get("method") == "Page.loadEventFired", deadline)
-            try:  # late messages
-                wait(lambda m: False, time.monotonic() + 1.0)
-            except TimeoutError:
-                pass
-            if screenshot is not None:
-                bottom = call(
-                    "Runtime.evaluate",
-                    {
-                        "expression": "(() => { const e = document.querySelector("
-                        "'#scoreboard'); const l = document.querySelector('p.legend'); "
-                        "const r = (l || e).getBoundingClientRect(); "
-                        "return Math.ceil(r.bottom + window.scrollY + 16); })()",
-                        "returnByValue": True,
-                    },
-                    session=sid,
-                )["result"]["value"]
-                shot = call(
-                    "Page.captureScreenshot",
-                    {
-                        "format": "png",
-                        "captureBeyondViewport": True,
-                        "clip": {"x": 0, "y": 0, "width": 1400, "height": bottom, "scale": 1},
-                    },
-                    session=sid,
-                )
-                screenshot.parent.mkdir(parents=True, exist_ok=True)
-                screenshot.write_bytes(base64.b64decode(shot["data"]))
-            send("Browser.close")
-        finally:
-            try:
-                proc.wait(timeout=15)
-            except subprocess.TimeoutExpired:
-                proc.kill()
-                proc.wait()
-            os.close(to_chrome_w)
-            os.close(from_chrome_r)
-    problems = []
-    for e in events:
-        p = e["params"]
-        if e["method"] == "Runtime.consoleAPICalled" and p["type"] in (
-            "error",
-            "warning",
-            "assert",
-        ):
-            problems.append(f"console.{p['type']}: " + " ".join(str(a.get("value", a.get(
-                "description", ""))) for a in p["args"]))  # fmt: skip
-        elif e["method"] == "Runtime.exceptionThrown":
-            d = p["exceptionDetails"]
-            problems.append(f"exception: {d.get('exception', {}).get('description', d['text'])}")
-        elif e["method"] == "Log.entryAdded" and p["entry"]["level"] in ("error", "warning"):
-            problems.append(f"log.{p['entry']['level']}: {p['entry']['text']}")
-    return problems
-
-
-needs_chromium = pytest.mark.skipif(not CHROMIUM.exists(), reason="/usr/bin/chromium not installed")
 
 
 @needs_chromium

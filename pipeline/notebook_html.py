@@ -1,0 +1,347 @@
+"""An executed notebook as one self-contained, byte-reproducible HTML file.
+
+nbconvert's ``lab`` HTML loads require.js, MathJax and mermaid from a CDN, so a reader without a
+network sees raw LaTeX. Here every piece of mathematics becomes MathML at build time, which
+browsers render natively:
+
+* markdown cells: ``$...$``, ``$$...$$``, ``\\(...\\)``, ``\\[...\\]`` and ``\\begin{env}...``
+  as nbconvert's own markdown parser finds them;
+* ``text/latex`` outputs (SymPy's ``$\\displaystyle ...$``, IPython's ``Math``).
+
+The LaTeX goes through docutils' converter (``docutils.utils.math.latex2mathml``, a dependency of
+Snakemake, so of the lock), with one correction: docutils turns an accent followed by a
+subscript (``\\tilde a_x``) into ``munderover``, placing the subscript *under* the letter; here it
+is a subscript of the accented letter, as in TeX. LaTeX that docutils cannot convert fails the
+build with every offending formula listed (never raw LaTeX in the page).
+
+The page has no ``<script>`` (no require.js, MathJax, mermaid or widget manager), no external
+stylesheet, and figures as ``data:`` URIs. Its bytes depend only on the notebook and the code it
+runs: :func:`normalise` removes what varies between runs of the same notebook (pandas Styler's
+random table ids, object addresses in reprs, the random ids of JavaScript and widget outputs,
+execution timestamps, widget state, the way printed text was split into messages), the kernel
+runs with a fixed ``PYTHONHASHSEED`` so that the iteration order of sets of strings is the same
+every time, and a notebook that reads the clock (``time.perf_counter()``, ``datetime.now()``,
+``%time``) is refused: what it prints would differ between runs (the workflow records a
+notebook's run time in the rule's benchmark file).
+
+>>> print(latex_to_mathml(r"\\tilde a_x"))  # doctest: +NORMALIZE_WHITESPACE
+<math xmlns="http://www.w3.org/1998/Math/MathML"> <msub> <mover accent="true"> <mi>a</mi>
+<mo stretchy="false">~</mo> </mover> <mi>x</mi> </msub> </math>
+>>> latex_to_mathml(r"\\frob x")
+Traceback (most recent call last):
+...
+pipeline.notebook_html.MathConversionError: cannot convert the LaTeX '\\\\frob x' to MathML: Unknown LaTeX command "\\frob".
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import re
+from collections.abc import Iterator
+from pathlib import Path
+
+import nbformat
+from docutils.utils.math import MathError
+from docutils.utils.math import latex2mathml as _l2m
+from docutils.utils.math import mathml_elements as _mml
+from jinja2 import DictLoader, pass_context
+from nbclient import NotebookClient
+from nbconvert import HTMLExporter
+from nbconvert.filters.markdown_mistune import IPythonRenderer, MarkdownWithMath
+from nbconvert.preprocessors import CoalesceStreamsPreprocessor
+
+__all__ = [
+    "KERNEL_HASH_SEED",
+    "MathConversionError",
+    "OfflineHTMLExporter",
+    "build",
+    "execute",
+    "latex_to_mathml",
+    "normalise",
+    "output_latex_to_mathml",
+    "to_html",
+    "wall_clock_reads",
+]
+
+#: ``PYTHONHASHSEED`` of the kernel that executes a notebook (set and dict order reproducible)
+KERNEL_HASH_SEED = "0"
+
+
+class MathConversionError(ValueError):
+    """LaTeX that cannot be rendered as MathML."""
+
+
+# --------------------------------------------------------------------------- LaTeX -> MathML
+
+_handle_script = _l2m.handle_script_or_limit
+
+
+def _script_of_accented(node, c, limits=""):
+    """docutils' ``handle_script_or_limit``, except that a subscript of an accented symbol
+    (an ``mover`` made by ``\\hat``, ``\\tilde``, ``\\overline``..., which carries an ``accent``
+    attribute) is an ``msub`` of it, not an ``munderover`` (docutils keeps that for limits)."""
+    child = node[-1] if len(node) else None
+    if c == "_" and not limits and isinstance(child, _mml.mover) and "accent" in child.attrib:
+        node.pop()
+        new_node = _mml.msub(child)
+        node.append(new_node)
+        return new_node
+    return _handle_script(node, c, limits)
+
+
+@contextlib.contextmanager
+def _accent_subscripts() -> Iterator[None]:
+    _l2m.handle_script_or_limit = _script_of_accented
+    try:
+        yield
+    finally:
+        _l2m.handle_script_or_limit = _handle_script
+
+
+def latex_to_mathml(tex: str, display: bool = False) -> str:
+    """A ``<math>`` element (``display="block"`` if ``display``) for the LaTeX ``tex``."""
+    try:
+        with _accent_subscripts():
+            return _l2m.tex2mathml(tex.strip(), as_block=display)
+    except MathError as exc:
+        raise MathConversionError(f"cannot convert the LaTeX {tex!r} to MathML: {exc}") from None
+
+
+_OUTPUT_MATH = re.compile(
+    r"\A\s*(?:\$\$(?P<dd>[^$]*)\$\$|\$(?P<d>[^$]*)\$|\\\[(?P<b>.*)\\\])\s*\Z", re.S
+)
+
+
+def output_latex_to_mathml(latex: str) -> str:
+    """The MathML of a ``text/latex`` output: one formula in ``$...$``, ``$$...$$`` or
+    ``\\[...\\]``, or a bare LaTeX environment, rendered as display math."""
+    m = _OUTPUT_MATH.match(latex)
+    if m:
+        return latex_to_mathml(next(g for g in m.groups() if g is not None), display=True)
+    if latex.strip().startswith("\\begin{"):
+        return latex_to_mathml(latex, display=True)
+    raise MathConversionError(
+        f"a text/latex output is not one formula ($...$, $$...$$, \\[...\\]): {latex[:200]!r}"
+    )
+
+
+# --------------------------------------------------------------------------- the exporter
+
+
+class _MathMLRenderer(IPythonRenderer):
+    """nbconvert's markdown renderer with the mathematics as MathML; a formula that cannot be
+    converted is recorded in ``problems`` (and the build fails on it, see ``to_html``)."""
+
+    def __init__(self, problems: list[str], **kw) -> None:
+        super().__init__(**kw)
+        self.problems = problems
+
+    def _math(self, tex: str, display: bool) -> str:
+        try:
+            return latex_to_mathml(tex, display=display)
+        except MathConversionError as exc:
+            self.problems.append(f"markdown: {exc}")
+            return f"<code>{self.escape_html(tex)}</code>"
+
+    def block_math(self, body: str) -> str:
+        return self._math(body, display=True)
+
+    def inline_math(self, body: str) -> str:
+        return self._math(body, display=False)
+
+    def latex_environment(self, name: str, body: str) -> str:
+        return self._math(f"\\begin{{{name}}}{body}\\end{{{name}}}", display=True)
+
+
+# lab's index.html.j2 without its scripts (require.js, MathJax, mermaid, widget manager), with
+# text/latex outputs as MathML in a math font, and wide formulas scrolling in their own box
+_TEMPLATE = r"""{%- extends 'index.html.j2' -%}
+{%- block html_head_js -%}{%- endblock html_head_js -%}
+{%- block html_head_js_mathjax -%}{%- endblock html_head_js_mathjax -%}
+{%- block html_head_js_mermaidjs -%}{%- endblock html_head_js_mermaidjs -%}
+{%- block jupyter_widgets -%}{%- endblock jupyter_widgets -%}
+{% block extra_css %}
+<style type="text/css">
+/* a font with an OpenType MATH table (stretched radicals and fences), as the report uses */
+math { font-family: "STIX Two Math", "Cambria Math", "Latin Modern Math", "DejaVu Math TeX Gyre",
+                    math; }
+/* a formula wider than the page scrolls in its own box instead of running off the page */
+.jp-RenderedLatex, .jp-RenderedMarkdown { overflow-x: auto; }
+</style>
+{% endblock extra_css %}
+{% block data_latex scoped %}
+<div class="jp-RenderedLatex jp-OutputArea-output {{ extra_class }}" data-mime-type="text/latex">
+{{ output.data['text/latex'] | latex_output_mathml }}
+</div>
+{%- endblock data_latex %}
+"""
+
+
+class OfflineHTMLExporter(HTMLExporter):
+    """HTMLExporter (``lab`` template, images embedded) whose page loads nothing: mathematics
+    as MathML, no scripts. ``problems`` lists the formulas the last export could not convert."""
+
+    def __init__(self, **kw) -> None:
+        kw.setdefault("embed_images", True)
+        super().__init__(
+            template_name="lab",
+            template_file="offline.html.j2",
+            extra_loaders=[DictLoader({"offline.html.j2": _TEMPLATE})],
+            **kw,
+        )
+        self.problems: list[str] = []
+
+    @pass_context
+    def markdown2html(self, context, source):
+        cell = context.get("cell", {})
+        renderer = _MathMLRenderer(
+            self.problems,
+            escape=False,
+            attachments=cell.get("attachments", {}),
+            embed_images=self.embed_images,
+            path=context.get("resources", {}).get("metadata", {}).get("path", ""),
+            anchor_link_text=self.anchor_link_text,
+            exclude_anchor_links=self.exclude_anchor_links,
+            **self.lexer_options,
+        )
+        return MarkdownWithMath(renderer=renderer).render(source)
+
+    def _latex_output(self, latex: str) -> str:
+        try:
+            return output_latex_to_mathml(latex)
+        except MathConversionError as exc:
+            self.problems.append(f"output: {exc}")
+            return "<pre>" + latex.replace("&", "&amp;").replace("<", "&lt;") + "</pre>"
+
+    def default_filters(self):
+        yield from super().default_filters()
+        yield ("markdown2html", self.markdown2html)
+        yield ("latex_output_mathml", self._latex_output)
+
+
+# --------------------------------------------------------------------------- determinism
+
+#: output MIME types dropped by ``normalise``: scripts and widget views (a page that runs no
+#: script cannot show them, and nbconvert gives each a random element id)
+DROPPED_MIME = ("application/javascript", "application/vnd.jupyter.widget-view+json")
+_STYLER_ID = re.compile(r'<table id="T_(?P<uuid>[0-9a-z_]+?)"')
+_ADDRESS = re.compile(r"(?<= at )0x[0-9a-fA-F]{4,16}\b")
+
+
+def _renumber_addresses(text: str, seen: dict[str, str]) -> str:
+    """Object addresses of default reprs (``<... at 0x7f...>``) -> ``0x1``, ``0x2``... by first
+    appearance in the notebook (equal addresses stay equal)."""
+    return _ADDRESS.sub(lambda m: seen.setdefault(m[0].lower(), f"0x{len(seen) + 1}"), text)
+
+
+def normalise(nb: nbformat.NotebookNode) -> nbformat.NotebookNode:
+    """Remove from an executed notebook, in place, what differs between two runs: how a
+    cell's printed text was split into stream messages (consecutive ones are merged, as
+    nbconvert's CoalesceStreamsPreprocessor does), execution timestamps, widget state,
+    JavaScript and widget-view outputs, pandas Styler table ids (``T_<random>`` ->
+    ``T_c<cell>o<output>``), object addresses in default reprs."""
+    nb, _ = CoalesceStreamsPreprocessor().preprocess(nb, {})
+    nb.metadata.pop("widgets", None)
+    addresses: dict[str, str] = {}
+    for ci, cell in enumerate(nb.cells):
+        cell.metadata.pop("execution", None)
+        if cell.cell_type != "code":
+            continue
+        outputs = []
+        for oi, out in enumerate(cell.outputs):
+            data = out.get("data")
+            if data is not None:
+                for mime in DROPPED_MIME:
+                    data.pop(mime, None)
+                if not data:
+                    continue
+                html = data.get("text/html")
+                if isinstance(html, str):
+                    for uuid in dict.fromkeys(m["uuid"] for m in _STYLER_ID.finditer(html)):
+                        html = re.sub(rf"\bT_{re.escape(uuid)}(?![0-9a-z])", f"T_c{ci}o{oi}", html)
+                    data["text/html"] = html
+                for mime in ("text/plain", "text/html"):
+                    if isinstance(data.get(mime), str):
+                        data[mime] = _renumber_addresses(data[mime], addresses)
+            if out.get("output_type") == "stream":
+                out["text"] = _renumber_addresses(out["text"], addresses)
+            outputs.append(out)
+        cell.outputs = outputs
+    return nb
+
+
+#: calls whose results differ between runs: a page that prints one is never the same twice
+#: (the workflow records a notebook's run time in the rule's benchmark file)
+_WALL_CLOCK = re.compile(
+    r"\b(?:time\.(?:perf_counter|perf_counter_ns|time|time_ns|monotonic|monotonic_ns|process_time)"
+    r"|datetime\.(?:now|today|utcnow)|date\.today)\s*\(|^\s*%%?time(?:it)?\b",
+    re.M,
+)
+
+
+def wall_clock_reads(nb: nbformat.NotebookNode) -> list[str]:
+    """``cell <i>: <line>`` for each line of a code cell that reads the clock (``time.time()``,
+    ``time.perf_counter()``, ``datetime.now()``, ``%time``...).
+
+    >>> nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("t0 = time.perf_counter()")])
+    >>> wall_clock_reads(nb)
+    ['cell 0: t0 = time.perf_counter()']
+    """
+    found = []
+    for i, cell in enumerate(nb.cells):
+        if cell.cell_type == "code":
+            lines = cell.source.splitlines()
+            found += [f"cell {i}: {ln.strip()}" for ln in lines if _WALL_CLOCK.search(ln)]
+    return found
+
+
+# --------------------------------------------------------------------------- build
+
+
+def execute(path: str | os.PathLike[str], cwd: str | os.PathLike[str] = ".", timeout: int = 600):
+    """Execute the notebook at ``path`` in a fresh python3 kernel whose working directory is
+    ``cwd`` and whose ``PYTHONHASHSEED`` is :data:`KERNEL_HASH_SEED`; return it, normalised.
+    A notebook that reads the clock is refused (its page would differ between runs)."""
+    nb = nbformat.read(path, as_version=4)
+    clock = wall_clock_reads(nb)
+    if clock:
+        raise ValueError(
+            f"{path}: reads the clock, so its page would differ between runs (the workflow "
+            "records run times in the rule's benchmark file):\n  " + "\n  ".join(clock)
+        )
+    previous = os.environ.get("PYTHONHASHSEED")
+    os.environ["PYTHONHASHSEED"] = KERNEL_HASH_SEED  # the kernel inherits this environment
+    try:
+        NotebookClient(
+            nb,
+            timeout=timeout,
+            kernel_name="python3",
+            record_timing=False,
+            resources={"metadata": {"path": str(cwd)}},
+        ).execute()
+    finally:
+        if previous is None:
+            os.environ.pop("PYTHONHASHSEED", None)
+        else:
+            os.environ["PYTHONHASHSEED"] = previous
+    return normalise(nb)
+
+
+def to_html(nb: nbformat.NotebookNode, title: str) -> str:
+    """The self-contained HTML page of an executed notebook (``title`` unless the notebook's
+    metadata has one); raises :class:`MathConversionError` listing every formula that could not
+    be rendered as MathML."""
+    exporter = OfflineHTMLExporter()
+    body, _ = exporter.from_notebook_node(nb, resources={"metadata": {"name": title}})
+    if exporter.problems:
+        raise MathConversionError(
+            f"{len(exporter.problems)} formula(s) of notebook {title!r} cannot be rendered as "
+            "MathML:\n  " + "\n  ".join(exporter.problems)
+        )
+    return body
+
+
+def build(notebook: str | os.PathLike[str], cwd: str | os.PathLike[str] = ".") -> str:
+    """Execute ``notebook`` and return its page (titled with the file's stem)."""
+    return to_html(execute(notebook, cwd), Path(notebook).stem)

@@ -1,0 +1,230 @@
+"""The notebook pages (pipeline.notebook_html): LaTeX as MathML, no script, the same bytes twice.
+
+The pages of the real notebooks are loaded in a browser by tests/shared/test_offline_html.py; here
+the exporter is checked on small notebooks built in the test (outputs written by hand, or run
+in a real kernel for the determinism of execution).
+"""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+from html.parser import HTMLParser
+
+import nbformat
+import pytest
+from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook, new_output
+
+from pipeline import notebook_html as NH
+
+PNG = "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8BQDwAEhQGAhKmMIQAAAABJRU5ErkJggg=="
+
+
+def _tree(mathml: str) -> ET.Element:
+    return ET.fromstring(mathml.replace("&ApplyFunction;", "&#8289;"))
+
+
+def _local(tag: str) -> str:
+    return tag.rsplit("}", 1)[-1]
+
+
+def _tags(el: ET.Element) -> list[str]:
+    return [_local(e.tag) for e in el.iter()]
+
+
+# --------------------------------------------------------------------------- LaTeX -> MathML
+
+
+def test_accented_symbol_takes_a_subscript_beside_it():
+    # docutils alone gives munderover(a, x, ~): the x under the letter
+    for tex in (r"\tilde a_x", r"\hat{x}_{1}", r"\dot\omega_x", r"\overline{x}_1"):
+        root = _tree(NH.latex_to_mathml(tex))
+        assert _local(root[0].tag) == "msub", (tex, _tags(root))
+        assert _local(root[0][0].tag) == "mover", (tex, _tags(root))
+        assert "munderover" not in _tags(root), tex
+    both = _tree(NH.latex_to_mathml(r"\tilde a_x^2"))
+    assert [_local(both[0].tag), _local(both[0][0].tag)] == ["msubsup", "mover"]
+
+
+def test_limits_keep_munderover_and_the_converter_is_left_as_found():
+    assert "munderover" in NH.latex_to_mathml(r"\sum_{i=1}^n x_i", display=True)
+    from docutils.utils.math import latex2mathml
+
+    assert latex2mathml.handle_script_or_limit is NH._handle_script  # restored after use
+    assert "munderover" in latex2mathml.tex2mathml(r"\tilde a_x")  # docutils' own behaviour
+
+
+def test_display_and_inline_math():
+    block = NH.latex_to_mathml(r"x = \frac{a}{b} \qquad \text{(eq. 1)}", display=True)
+    assert block.startswith('<math xmlns="http://www.w3.org/1998/Math/MathML" display="block">')
+    assert "<mfrac>" in block and "<mtext>(eq. 1)</mtext>" in block
+    assert 'display="block"' not in NH.latex_to_mathml("x")
+
+
+def test_unsupported_latex_is_a_precise_error():
+    with pytest.raises(NH.MathConversionError, match=r"'\\\\frob\{x\}'.*Unknown LaTeX command"):
+        NH.latex_to_mathml(r"\frob{x}")
+
+
+@pytest.mark.parametrize(
+    "latex",
+    [r"$\displaystyle \sin{\left(x \right)}$", r"$$\sin x$$", r"\[\sin x\]",
+     r"\begin{matrix}\sin x\end{matrix}"],
+)  # fmt: skip
+def test_latex_outputs_are_display_math(latex):
+    out = NH.output_latex_to_mathml(latex)
+    assert 'display="block"' in out and ("sin" in out)
+
+
+def test_latex_output_that_is_not_one_formula_is_refused():
+    with pytest.raises(NH.MathConversionError, match="not one formula"):
+        NH.output_latex_to_mathml(r"the angle $x$ and $y$ are small")
+
+
+# --------------------------------------------------------------------------- the page
+
+
+def _notebook(uuid: str = "a1b2c", address: str = "0x7f3a2b1c9d80", split: bool = False):
+    md = new_markdown_cell(
+        "# Title\n\nInline $\\tilde a_x = 2g\\sin\\theta$ and display\n\n"
+        "$$\\dot c = -\\omega \\times c \\qquad \\text{(eq. 13)}$$\n\n"
+        "an environment \\begin{bmatrix} 1 & 0 \\\\ 0 & 1 \\end{bmatrix} and **bold**."
+    )
+    code = new_code_cell("show()", execution_count=1)
+    stream = (
+        [new_output("stream", name="stdout", text="first line\n"),
+         new_output("stream", name="stdout", text="second line\n")]
+        if split
+        else [new_output("stream", name="stdout", text="first line\nsecond line\n")]
+    )  # fmt: skip
+    code.outputs = [
+        *stream,
+        new_output(
+            "display_data",
+            data={"text/latex": r"$\displaystyle x = \frac{1}{2}$", "text/plain": "Eq(x, 1/2)"},
+        ),  # fmt: skip
+        new_output("display_data", data={"image/png": PNG, "text/plain": "<Figure>"}),
+        new_output(
+            "display_data",
+            data={
+                "text/html": f'<style>#T_{uuid}_row0 {{color: red}}</style><table id="T_{uuid}">'
+                f'<tr><td id="T_{uuid}_row0_col0">1</td></tr></table>',
+                "text/plain": "<Styler>",
+            },
+        ),  # fmt: skip
+        new_output(
+            "execute_result",
+            data={"text/plain": f"<object object at {address}>"},
+            execution_count=1,
+        ),  # fmt: skip
+        new_output(
+            "display_data",
+            data={"application/javascript": "console.log(1)", "text/plain": "<JS>"},
+        ),
+    ]
+    md.id, code.id = "markdown-1", "code-1"  # stored in a notebook file (random if new)
+    nb = new_notebook(cells=[md, code])
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
+    nb.metadata["widgets"] = {"application/vnd.jupyter.widget-state+json": {"state": {}}}
+    return nb
+
+
+class _Refs(HTMLParser):
+    def __init__(self) -> None:
+        super().__init__(convert_charrefs=True)
+        self.tags: list[str] = []
+        self.refs: list[tuple[str, str, str]] = []
+
+    def handle_starttag(self, tag, attrs):
+        self.tags.append(tag)
+        self.refs += [(tag, k, v or "") for k, v in attrs if k in ("src", "href", "data")]
+
+
+def test_page_has_mathml_and_loads_nothing():
+    html = NH.to_html(NH.normalise(_notebook()), "demo")
+    refs = _Refs()
+    refs.feed(html)
+    assert "<title>demo</title>" in html
+    assert "script" not in refs.tags and "link" not in refs.tags and "iframe" not in refs.tags
+    for tag, _, value in refs.refs:
+        assert not re.match(r"\s*(https?:)?//", value), (tag, value)
+    assert not re.search(r"mathjax|require\.js|mermaid\.esm|unpkg|cdnjs", html, re.I)
+    maths = re.findall(r"<math\b.*?</math>", html, re.S)
+    assert len(maths) == 4  # inline, display, environment, the text/latex output
+    assert sum('display="block"' in m for m in maths) == 3
+    assert "$" not in re.sub(r"<style.*?</style>", "", html, flags=re.S)
+    assert "<msub>" in maths[0] and "<mover" in maths[0]  # the accent fix in a page
+    assert "<mfrac>" in maths[3]
+    imgs = [v for t, k, v in refs.refs if t == "img"]
+    assert imgs == [f"data:image/png;base64,{PNG}"]
+    assert "console.log" not in html and "&lt;JS&gt;" in html  # the script output's text form
+
+
+def test_every_unconvertible_formula_is_listed():
+    nb = new_notebook(cells=[new_markdown_cell("$\\frob x$ and $\\frab y$ and $z$")])
+    with pytest.raises(NH.MathConversionError) as err:
+        NH.to_html(nb, "bad")
+    text = str(err.value)
+    assert "2 formula(s) of notebook 'bad'" in text and "\\frob" in text and "\\frab" in text
+
+
+def test_normalise_removes_what_varies_between_runs():
+    a = NH.to_html(NH.normalise(_notebook()), "demo")
+    b = NH.to_html(NH.normalise(_notebook("f9e8d", "0x55d0c0ffee10", split=True)), "demo")
+    assert a == b
+    assert 'id="T_c1o3"' in a and "#T_c1o3_row0" in a and "T_a1b2c" not in a
+    assert "&lt;object object at 0x1&gt;" in a
+    # without normalising, the same two notebooks give different pages (the test can fail)
+    assert NH.to_html(_notebook(), "demo") != NH.to_html(
+        _notebook("f9e8d", "0x55d0c0ffee10", split=True), "demo"
+    )
+
+
+def test_normalise_keeps_equal_addresses_equal_and_distinct_ones_distinct():
+    nb = new_notebook(cells=[new_code_cell("x")])
+    nb.cells[0].outputs = [
+        new_output("stream", name="stdout", text="<f at 0xaaaa10> <g at 0xbbbb20> <f at 0xaaaa10>"),
+        new_output("stream", name="stderr", text="warn"),
+    ]
+    out = NH.normalise(nb).cells[0].outputs
+    assert out[0].text == "<f at 0x1> <g at 0x2> <f at 0x1>"
+    assert [o.name for o in out] == ["stdout", "stderr"]  # different streams stay apart
+
+
+def test_a_notebook_reading_the_clock_is_refused(tmp_path):
+    nb = new_notebook(cells=[new_code_cell("import time\nT0 = time.perf_counter()")])
+    path = tmp_path / "clock.ipynb"
+    nbformat.write(nb, path)
+    with pytest.raises(
+        ValueError, match=r"reads the clock.*\n  cell 0: T0 = time.perf_counter\(\)"
+    ):
+        NH.execute(path, tmp_path)
+
+
+def test_execution_is_reproducible(tmp_path):
+    """Two executions in fresh kernels give the same page: set order (PYTHONHASHSEED), object
+    addresses and stream splitting are fixed by the build."""
+    code = (
+        "import sys\n"
+        "words = {f'word{i}' for i in range(40)}\n"
+        "print(list(words))\n"
+        "sys.stdout.flush()\n"
+        "print('after flush')\n"
+        "object()"
+    )
+    nb = new_notebook(cells=[new_markdown_cell("# Demo $x^2$"), new_code_cell(code)])
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
+    path = tmp_path / "demo.ipynb"
+    nbformat.write(nb, path)
+    first, second = NH.build(path, tmp_path), NH.build(path, tmp_path)
+    assert first == second
+    assert "after flush" in first and "&lt;object at 0x1&gt;" in first
+    assert "<title>demo</title>" in first
