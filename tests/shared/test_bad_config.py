@@ -236,3 +236,28 @@ def test_config_file_is_validated_from_a_path_snakemake_was_given(tmp_path):
     other.write_text("papers: [north_finding]\npapers: [platform_drift]\n", encoding="utf-8")
     with pytest.raises(ConfigError, match=f"{other}: line 2: papers: duplicate key"):
         validate_workflow_config({}, [Path(other)], ROOT)
+
+
+def test_no_schema_uses_a_format_and_the_slow_format_package_is_not_imported():
+    """pipeline/__init__.py hides rfc3987-syntax from jsonschema (2 s of CPU per process):
+    that is safe only while no schema asks for a ``format``."""
+    import json
+    import subprocess
+    import sys
+
+    def formats(node):
+        if isinstance(node, dict):
+            yield from (["format"] if "format" in node and isinstance(node["format"], str) else [])
+            for v in node.values():
+                yield from formats(v)
+        elif isinstance(node, list):
+            for v in node:
+                yield from formats(v)
+
+    for schema in sorted((ROOT / "config" / "schemas").glob("*.json")):
+        assert not list(formats(json.loads(schema.read_text(encoding="utf-8")))), schema
+    probe = "import sys, pipeline.config; print(bool(sys.modules.get('rfc3987_syntax')))"
+    out = subprocess.run(
+        [sys.executable, "-c", probe], cwd=ROOT, capture_output=True, text=True, check=True
+    )
+    assert out.stdout.strip() == "False"
