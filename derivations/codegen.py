@@ -52,7 +52,9 @@ class GeneratedFunction:
     ``(3, 3)`` or ``(3,)``) makes the function return one array whose trailing axes have that
     shape, filled row by row from ``exprs``, instead of a tuple. ``audit_only`` is a one-line
     reason why the pipeline does not call the function (it is generated for the audit, the
-    notebook or the tests); empty for a function the pipeline calls.
+    notebook or the tests); empty for a function the pipeline calls. ``cse=False`` prints
+    every output whole (``v/z``, not ``_x0 = z**(-1.0)`` then ``_x0*v``), for formulas whose
+    rounding should be the textbook one.
     """
 
     name: str
@@ -62,6 +64,7 @@ class GeneratedFunction:
     names: Mapping[sp.Symbol, str] = field(default_factory=dict)
     shape: tuple[int, ...] | None = None
     audit_only: str = ""
+    cse: bool = True
 
 
 class _Printer(NumPyPrinter):
@@ -100,7 +103,10 @@ def render_function(fn: GeneratedFunction) -> str:
         )
     arg_names = [rename[s].name for s in fn.args]
     printer = _Printer()
-    subexprs, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("_x"), order="canonical")
+    if fn.cse:
+        subexprs, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("_x"), order="canonical")
+    else:
+        subexprs, reduced = [], exprs
     lines = [f"def {fn.name}({', '.join(arg_names)}):", f'    """{fn.doc.strip()}"""']
     for sym, sub in subexprs:
         lines.append(f"    {sym} = {printer.doprint(sub)}")

@@ -31,9 +31,9 @@ lat_dot, lon_dot, v_n, v_e = sp.symbols("lat_dot lon_dot v_n v_e", real=True)
 w1, w2, w3 = sp.symbols("w1 w2 w3", real=True)
 
 
-def _matrix(name, args, m: sp.Matrix, doc: str, audit_only: str = "") -> GeneratedFunction:
+def _matrix(name, args, m: sp.Matrix, doc: str, cse: bool = True) -> GeneratedFunction:
     shape = (m.rows, m.cols) if m.cols > 1 else (m.rows,)
-    return GeneratedFunction(name, tuple(args), tuple(m), doc, shape=shape, audit_only=audit_only)
+    return GeneratedFunction(name, tuple(args), tuple(m), doc, shape=shape, cse=cse)
 
 
 def functions() -> list[GeneratedFunction]:
@@ -74,6 +74,12 @@ def functions() -> list[GeneratedFunction]:
             "Cross-product matrix [w x]: skew(w) @ v == cross(w, v).",
         ),
         _matrix(
+            "earth_rate_e",
+            (omega_ie,),
+            frames.earth_rate_e(omega_ie),
+            "Earth rate in the Earth-fixed (or inertial) frame, z along the spin axis: [0, 0, omega_ie].",
+        ),
+        _matrix(
             "earth_rate_n",
             (omega_ie, lat),
             frames.earth_rate_n(omega_ie, lat),
@@ -91,12 +97,14 @@ def functions() -> list[GeneratedFunction]:
             (v_n, v_e, lat, rho),
             frames.latlon_rates(v_n, v_e, lat, rho),
             "[lat_dot, lon_dot] = [v_n / rho, v_e / (rho cos lat)] at constant radius rho.",
+            cse=False,
         ),
         _matrix(
             "transport_rate_n_velocity",
             (v_n, v_e, lat, rho),
             frames.transport_rate_n_velocity(v_n, v_e, lat, rho),
             "[omega^{NE}]^N = [v_e, -v_n, -v_e tan lat] / rho: transport_rate_n of latlon_rates.",
+            cse=False,
         ),
     ]
 

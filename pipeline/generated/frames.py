@@ -30,7 +30,7 @@ def _shaped(shape, *outs):
     return np.stack(arrays, axis=-1).reshape(arrays[0].shape + shape)
 
 
-__all__ = ['rot_z', 'mat_tn', 'mat_ne', 'body_rate_from_euler_rates', 'skew', 'earth_rate_n', 'transport_rate_n', 'latlon_rates', 'transport_rate_n_velocity']
+__all__ = ['rot_z', 'mat_tn', 'mat_ne', 'body_rate_from_euler_rates', 'skew', 'earth_rate_e', 'earth_rate_n', 'transport_rate_n', 'latlon_rates', 'transport_rate_n_velocity']
 
 
 def rot_z(a):
@@ -119,6 +119,14 @@ def skew(w1, w2, w3):
     return _shaped((3, 3), out0, out1, out2, out3, out4, out5, out6, out7, out8)
 
 
+def earth_rate_e(omega_ie):
+    """Earth rate in the Earth-fixed (or inertial) frame, z along the spin axis: [0, 0, omega_ie]."""
+    out0 = 0
+    out1 = 0
+    out2 = omega_ie
+    return _shaped((3,), out0, out1, out2)
+
+
 def earth_rate_n(omega_ie, lat):
     """Earth rate in NED, [T]^{NE} [0, 0, omega_ie] = omega_ie [cos lat, 0, -sin lat]."""
     out0 = omega_ie*np.cos(lat)
@@ -138,17 +146,14 @@ def transport_rate_n(lat, lat_dot, lon_dot):
 
 def latlon_rates(v_n, v_e, lat, rho):
     """[lat_dot, lon_dot] = [v_n / rho, v_e / (rho cos lat)] at constant radius rho."""
-    _x0 = rho**(-1.0)
-    out0 = _x0*v_n
-    out1 = _x0*v_e/np.cos(lat)
+    out0 = v_n/rho
+    out1 = v_e/(rho*np.cos(lat))
     return _shaped((2,), out0, out1)
 
 
 def transport_rate_n_velocity(v_n, v_e, lat, rho):
     """[omega^{NE}]^N = [v_e, -v_n, -v_e tan lat] / rho: transport_rate_n of latlon_rates."""
-    _x0 = rho**(-1.0)
-    _x1 = _x0*v_e
-    out0 = _x1
-    out1 = -_x0*v_n
-    out2 = -_x1*np.tan(lat)
+    out0 = v_e/rho
+    out1 = -v_n/rho
+    out2 = -v_e*np.tan(lat)/rho
     return _shaped((3,), out0, out1, out2)
