@@ -29,6 +29,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import numpy as np
 import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
 
@@ -47,7 +48,13 @@ class GeneratedFunction:
 
     ``args`` are the SymPy symbols in argument order; ``exprs`` one expression or
     a tuple of them (the function then returns a tuple of broadcast arrays).
-    ``names`` optionally renames symbols to Python identifiers.
+    ``names`` optionally renames symbols to Python identifiers. ``shape`` (for example
+    ``(3, 3)`` or ``(3,)``) makes the function return one array whose trailing axes have that
+    shape, filled row by row from ``exprs``, instead of a tuple. ``audit_only`` is a one-line
+    reason why the pipeline does not call the function (it is generated for the audit, the
+    notebook or the tests); empty for a function the pipeline calls. ``cse=False`` prints
+    every output whole (``v/z``, not ``_x0 = z**(-1.0)`` then ``_x0*v``), for formulas whose
+    rounding should be the textbook one.
     """
 
     name: str
@@ -55,6 +62,9 @@ class GeneratedFunction:
     exprs: sp.Expr | Sequence[sp.Expr]
     doc: str
     names: Mapping[sp.Symbol, str] = field(default_factory=dict)
+    shape: tuple[int, ...] | None = None
+    audit_only: str = ""
+    cse: bool = True
 
 
 class _Printer(NumPyPrinter):
@@ -93,7 +103,10 @@ def render_function(fn: GeneratedFunction) -> str:
         )
     arg_names = [rename[s].name for s in fn.args]
     printer = _Printer()
-    subexprs, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("_x"), order="canonical")
+    if fn.cse:
+        subexprs, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("_x"), order="canonical")
+    else:
+        subexprs, reduced = [], exprs
     lines = [f"def {fn.name}({', '.join(arg_names)}):", f'    """{fn.doc.strip()}"""']
     for sym, sub in subexprs:
         lines.append(f"    {sym} = {printer.doprint(sub)}")
@@ -101,7 +114,11 @@ def render_function(fn: GeneratedFunction) -> str:
     for i, e in enumerate(reduced):
         lines.append(f"    out{i} = {printer.doprint(e)}")
         outs.append(f"out{i}")
-    if single:
+    if fn.shape is not None:
+        if single or len(outs) != int(np.prod(fn.shape)):
+            raise ValueError(f"function {fn.name}: {len(outs)} outputs do not fill {fn.shape}")
+        lines.append(f"    return _shaped({tuple(fn.shape)!r}, {', '.join(outs)})")
+    elif single:
         lines.append("    return out0")
     else:
         lines.append(f"    return _broadcast({', '.join(outs)})")
@@ -124,6 +141,15 @@ def _broadcast(*outs):
     )
 '''
 
+_SHAPED = '''
+
+def _shaped(shape, *outs):
+    """The broadcast outputs as one array of shape ``broadcast + shape``, filled row by row."""
+    arrays = _broadcast(*outs)
+    return np.stack(arrays, axis=-1).reshape(arrays[0].shape + shape)
+
+'''
+
 
 def render_module(functions: Sequence[GeneratedFunction], header: str) -> str:
     """Source of a whole generated module (header docstring, prelude, functions)."""
@@ -132,10 +158,26 @@ def render_module(functions: Sequence[GeneratedFunction], header: str) -> str:
     ]
     parts.append("# ruff: noqa\n")
     parts.append(_PRELUDE)
+    if any(f.shape is not None for f in functions):
+        parts.append(_SHAPED)
     parts.append(f"\n__all__ = {[f.name for f in functions]!r}\n")
+    audit_only = {f.name: f.audit_only for f in functions if f.audit_only}
+    if audit_only:
+        parts.append(_render_audit_only(audit_only))
     for fn in functions:
         parts.append("\n\n" + render_function(fn))
     return "".join(parts)
+
+
+def _render_audit_only(reasons: Mapping[str, str]) -> str:
+    for name, reason in reasons.items():
+        if "\n" in reason or not reason.strip():
+            raise ValueError(f"audit-only reason of {name} must be one non-empty line")
+    body = "".join(f"    {name!r}: {reason.strip()!r},\n" for name, reason in reasons.items())
+    return (
+        "\n#: Functions the pipeline does not call, each with the reason it is generated.\n"
+        f"AUDIT_ONLY = {{\n{body}}}\n"
+    )
 
 
 def write_module(path: str | os.PathLike[str], source: str) -> None:

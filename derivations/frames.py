@@ -43,6 +43,10 @@ __all__ = [
     "earth_rate_e",
     "earth_rate_n",
     "angular_velocity_from_dcm",
+    "euler_rate_map",
+    "transport_rate_n",
+    "latlon_rates",
+    "transport_rate_n_velocity",
 ]
 
 
@@ -124,3 +128,63 @@ def angular_velocity_from_dcm(mat_ab: sp.Matrix, t: sp.Symbol, simplify: bool = 
     if simplify:
         omega_skew = sp.simplify(omega_skew)
     return unskew(omega_skew)
+
+
+def euler_rate_map(theta: sp.Expr, phi: sp.Expr) -> sp.Matrix:
+    """``E`` with ``[omega^{TN}]^T = E [phi_dot, theta_dot, psi_dot]`` for the 3-2-1 sequence.
+
+    Derived from Poisson's equation on ``mat_tn(psi(t), theta(t), phi(t))``: the body rate
+    is linear in the Euler rates, and ``E`` is its Jacobian with respect to them (it does not
+    depend on ``psi``, which the derivation checks).
+    """
+    t = sp.Symbol("t", real=True)
+    angles = [sp.Function(n, real=True)(t) for n in ("psi_", "theta_", "phi_")]
+    w = angular_velocity_from_dcm(mat_tn(*angles), t)
+    rates = sp.symbols("psi_dot_ theta_dot_ phi_dot_", real=True)
+    w = w.subs({a.diff(t): r for a, r in zip(angles, rates, strict=True)})
+    w = w.subs({angles[1]: theta, angles[2]: phi})
+    assert not w.has(angles[0])
+    e = w.jacobian([rates[2], rates[1], rates[0]])
+    assert sp.simplify(e * sp.Matrix([rates[2], rates[1], rates[0]]) - w) == sp.zeros(3, 1)
+    return sp.simplify(e)
+
+
+def transport_rate_n(lat: sp.Expr, lat_dot: sp.Expr, lon_dot: sp.Expr) -> sp.Matrix:
+    """``[omega^{NE}]^N``: rate of NED relative to E for latitude and longitude rates.
+
+    Poisson's equation on ``[T]^{NE}(lat(t), lon(t))``; with the inertial longitude (longitude
+    plus Earth rotation angle) in place of ``lon`` it is the inertial rate of NED.
+    """
+    t = sp.Symbol("t", real=True)
+    la, lo = sp.Function("lat_", real=True)(t), sp.Function("lon_", real=True)(t)
+    w = angular_velocity_from_dcm(mat_ne(la, lo), t)
+    w = w.subs({la.diff(t): lat_dot, lo.diff(t): lon_dot}).subs(la, lat)
+    assert not w.has(lo)
+    return sp.simplify(w)
+
+
+def latlon_rates(v_n: sp.Expr, v_e: sp.Expr, lat: sp.Expr, rho: sp.Expr) -> sp.Matrix:
+    """``[lat_dot, lon_dot]`` of a point at constant radius ``rho`` moving at ``v_n``, ``v_e``.
+
+    Solved from ``v^N = [T]^{NE} d/dt r^E`` with ``r^E = -rho * (down axis in E)``: the
+    north and east components of the velocity the rates produce equal ``v_n`` and ``v_e``.
+    """
+    t = sp.Symbol("t", real=True)
+    la, lo = sp.Function("lat_", real=True)(t), sp.Function("lon_", real=True)(t)
+    m = mat_ne(la, lo)
+    r_e = -rho * m.T[:, 2]
+    v = sp.simplify(m * r_e.diff(t))
+    assert sp.simplify(v[2]) == 0
+    rates = sp.symbols("lat_dot_ lon_dot_", real=True)
+    v = v.subs({la.diff(t): rates[0], lo.diff(t): rates[1]}).subs(la, lat)
+    sol = sp.solve([v[0] - v_n, v[1] - v_e], rates, dict=True)
+    assert len(sol) == 1
+    return sp.Matrix([sp.simplify(sol[0][r]) for r in rates])
+
+
+def transport_rate_n_velocity(v_n: sp.Expr, v_e: sp.Expr, lat: sp.Expr, rho: sp.Expr) -> sp.Matrix:
+    """``[omega^{NE}]^N`` in terms of the velocity: :func:`transport_rate_n` with
+    :func:`latlon_rates` substituted, ``[v_e, -v_n, -v_e tan(lat)] / rho``."""
+    lat_dot, lon_dot = latlon_rates(v_n, v_e, lat, rho)
+    w = transport_rate_n(lat, lat_dot, lon_dot)
+    return sp.simplify(w.applyfunc(lambda e: sp.simplify(sp.expand_trig(e)).rewrite(sp.tan)))

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import sympy as sp
+
 from derivations.codegen import GeneratedFunction, generate_main, render_module
 from derivations.platform_drift import algorithm as alg
 from derivations.platform_drift import alignment as al
@@ -42,8 +44,64 @@ navigation frame m_N (north, west, up); every function broadcasts its arguments.
 paper prints an equation that differs from the derivation, the derived form is generated."""
 
 
-def _fn(name, args, exprs, doc, names=None) -> GeneratedFunction:
-    return GeneratedFunction(name, tuple(args), exprs, doc, {**NAMES, **(names or {})})
+_TABLE2 = (
+    "Table 2 closed form, audited and checked against the Schuler loop by the tests; the "
+    "strapdown curves are simulated (strapdown.py), not evaluated from Table 2"
+)
+
+#: Generated functions the pipeline does not call, with the reason (DESIGN.md invariant 1).
+AUDIT_ONLY = {
+    "motion_rates": (
+        "eqs. 9 and 11 in s, checked against eq. 15 by the tests; the simulation integrates "
+        "the platform DCM and the specific force instead"
+    ),
+    "gravity_spherical": "gravity model of eq. 15 (inside oscillation_rates), used by the tests",
+    "specific_force_platform_linear": (
+        "eq. 17 to first order in the tilts, for the audit; the simulation uses the exact "
+        "specific_force_platform"
+    ),
+    "specific_force_stationary": "eq. 18 (eq. 17 at rest), for the audit and the notebook",
+    "tilt_kinematics_stationary": (
+        "eq. 19, first-order kinematics behind eqs. 28-36; the simulation integrates the DCM"
+    ),
+    "alignment_tilts": (
+        "eq. 20, first order; platform.initial_state levels the platform exactly (mass or "
+        "plumb vertical) instead"
+    ),
+    "r_alignment": (
+        "eq. 24; NOT YET CALLED (issue 12 open): platform.initial_state sets p, q numerically "
+        "and r = 0 (eq. 25)"
+    ),
+    "nav_initial_tilt_rates": (
+        "eq. 27, initial tilt rates of the analytic solution (eqs. 32, 36), used in the derivation"
+    ),
+    "table2_accel_bias": _TABLE2,
+    "table2_initial_tilt": _TABLE2,
+    "table2_scale_factor": _TABLE2,
+    "table2_gyro_drift": _TABLE2,
+    "table2_initial_velocity": _TABLE2,
+    "table2_initial_azimuth": _TABLE2,
+}
+
+
+def _fn(name, args, exprs, doc, names=None, cse=True) -> GeneratedFunction:
+    return GeneratedFunction(
+        name,
+        tuple(args),
+        exprs,
+        doc,
+        {**NAMES, **(names or {})},
+        audit_only=AUDIT_ONLY.get(name, ""),
+        cse=cse,
+    )
+
+
+def _definitions_solved(unknowns, knowns) -> tuple[sp.Expr, ...]:
+    """The definitions of eqs. 13-14 (alg.DEFINITIONS) solved for ``unknowns``."""
+    eqs = [k - alg.DEFINITIONS[k] for k in knowns]
+    sol = sp.solve(eqs, unknowns, dict=True)
+    assert len(sol) == 1
+    return tuple(sol[0][u] for u in unknowns)
 
 
 def functions() -> list[GeneratedFunction]:
@@ -76,6 +134,31 @@ def functions() -> list[GeneratedFunction]:
             tuple(grav),
             "Spherical mass attraction -GM r / |r|^3 in s (the gravity model of eq. 15).\n"
             "    Returns (g1, g2, g3).",
+        ),
+        # eq. 13
+        _fn(
+            "radius_rates_from_velocity",
+            (s.u, s.v, s.z),
+            _definitions_solved((s.omega_x, s.omega_y), (s.u, s.v)),
+            "Eq. 13 (the definitions eq. 15 is written in): omega_x = -v/z, omega_y = u/z.\n"
+            "    Returns (omega_x, omega_y).",
+            cse=False,
+        ),
+        # eq. 14
+        _fn(
+            "tilts_from_position",
+            (s.x, s.y, s.R_G),
+            _definitions_solved((s.phi_x, s.phi_y), (s.x, s.y)),
+            "Eq. 14 (the definitions eq. 15 is written in): phi_x = y/R_G, phi_y = -x/R_G.\n"
+            "    Returns (phi_x, phi_y).",
+            cse=False,
+        ),
+        # eq. 14 solved for the position
+        _fn(
+            "position_from_tilts",
+            (s.phi_x, s.phi_y, s.R_G),
+            (alg.DEFINITIONS[s.x], alg.DEFINITIONS[s.y]),
+            "Eq. 14 solved for the position: x = -R_G phi_y, y = R_G phi_x. Returns (x, y).",
         ),
         _fn(
             "platform_commands_rates",

@@ -49,6 +49,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from pipeline.altimeter_attitude.profiles import Profiles
+from pipeline.generated import frames
 
 __all__ = ["MAX_QUAD_STEP_S", "Truth", "altitude", "load_factor", "mat_from_euler", "truth"]
 
@@ -57,24 +58,11 @@ _GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
 
 
 def mat_from_euler(roll, pitch, yaw) -> np.ndarray:
-    """C_b^n = Rz(yaw) Ry(pitch) Rx(roll) for arrays of angles (rad): shape (..., 3, 3)."""
-    roll, pitch, yaw = np.broadcast_arrays(
-        *(np.asarray(a, dtype=float) for a in (roll, pitch, yaw))
-    )
-    sr, cr = np.sin(roll), np.cos(roll)
-    sp, cp = np.sin(pitch), np.cos(pitch)
-    sy, cy = np.sin(yaw), np.cos(yaw)
-    mat = np.empty(roll.shape + (3, 3))
-    mat[..., 0, 0] = cy * cp
-    mat[..., 0, 1] = cy * sp * sr - sy * cr
-    mat[..., 0, 2] = cy * sp * cr + sy * sr
-    mat[..., 1, 0] = sy * cp
-    mat[..., 1, 1] = sy * sp * sr + cy * cr
-    mat[..., 1, 2] = sy * sp * cr - cy * sr
-    mat[..., 2, 0] = -sp
-    mat[..., 2, 1] = cp * sr
-    mat[..., 2, 2] = cp * cr
-    return mat
+    """C_b^n = Rz(yaw) Ry(pitch) Rx(roll) for arrays of angles (rad): shape (..., 3, 3).
+
+    The transpose of the generated 3-2-1 ``[T]^{TN}`` (``pipeline.generated.frames.mat_tn``).
+    """
+    return np.swapaxes(frames.mat_tn(yaw, pitch, roll), -1, -2)
 
 
 @dataclass(frozen=True)
@@ -165,16 +153,8 @@ def truth(profiles: Profiles, t) -> Truth:
     theta, theta_dot = gam + alpha, gam_dot + alpha_dot
     psi, psi_dot = chi, chi_dot
 
-    s_phi, c_phi = np.sin(phi), np.cos(phi)
-    s_th, c_th = np.sin(theta), np.cos(theta)
-    rate_b = np.stack(
-        [
-            phi_dot - psi_dot * s_th,
-            theta_dot * c_phi + psi_dot * c_th * s_phi,
-            -theta_dot * s_phi + psi_dot * c_th * c_phi,
-        ],
-        axis=-1,
-    )
+    # eq. 4: body rate relative to NED from the Euler rates (generated 3-2-1 Euler-rate map)
+    rate_b = frames.body_rate_from_euler_rates(theta, phi, phi_dot, theta_dot, psi_dot)
 
     s_g, c_g = np.sin(gam), np.cos(gam)
     s_c, c_c = np.sin(chi), np.cos(chi)

@@ -26,6 +26,13 @@ def _broadcast(*outs):
 
 __all__ = ['model_matrix_a', 'noise_matrix_c', 'noise_gamma', 'normalisation_error', 'third_row_from_euler', 'euler_from_third_row', 'euler_jacobian_third_row', 'euler_model_rhs', 'euler_noise_jacobian', 'euler_process_noise', 'euler_state_jacobian', 'accel_third_row', 'leveling_angles', 'pi_gains']
 
+#: Functions the pipeline does not call, each with the reason it is generated.
+AUDIT_ONLY = {
+    'normalisation_error': 'eq. 15; NOT YET CALLED (issue 12 open): linear_kf.py and complementary.py evaluate 1 - c.c with einsum, whose rounding near c.c = 1 differs',
+    'euler_noise_jacobian': 'd(UKF model)/d[n_w, n_a]; the filters take it through euler_process_noise (dt^2 J Sigma J^T), generated from the same derivation',
+    'leveling_angles': 'eq. 11 as derived, for the audit; levelling runs through accel_third_row (eq. 17-b) and euler_from_third_row, equal to it when ||f|| = g',
+}
+
 
 def model_matrix_a(omegat_x, omegat_y, omegat_z, ft_x, ft_y, ft_z, k, gamma):
     """Eq. 26: the 5 x 5 system matrix A (row by row) of x = [c1, c2, c3, V_d, h] for

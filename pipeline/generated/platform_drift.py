@@ -23,7 +23,25 @@ def _broadcast(*outs):
         for a in arrays
     )
 
-__all__ = ['motion_rates', 'gravity_spherical', 'platform_commands_rates', 'oscillation_rates', 'position_rates', 'specific_force_platform', 'specific_force_platform_linear', 'specific_force_stationary', 'tilt_kinematics_stationary', 'k_sh_stationary', 'alpha_deflection', 'alignment_tilts', 'r_alignment', 'nav_initial_tilt_rates', 'error_ch1', 'error_ch3', 'schuler_period', 'table2_accel_bias', 'table2_initial_tilt', 'table2_scale_factor', 'table2_gyro_drift', 'table2_azimuth_drift', 'table2_initial_velocity', 'table2_initial_azimuth']
+__all__ = ['motion_rates', 'gravity_spherical', 'radius_rates_from_velocity', 'tilts_from_position', 'position_from_tilts', 'platform_commands_rates', 'oscillation_rates', 'position_rates', 'specific_force_platform', 'specific_force_platform_linear', 'specific_force_stationary', 'tilt_kinematics_stationary', 'k_sh_stationary', 'alpha_deflection', 'alignment_tilts', 'r_alignment', 'nav_initial_tilt_rates', 'error_ch1', 'error_ch3', 'schuler_period', 'table2_accel_bias', 'table2_initial_tilt', 'table2_scale_factor', 'table2_gyro_drift', 'table2_azimuth_drift', 'table2_initial_velocity', 'table2_initial_azimuth']
+
+#: Functions the pipeline does not call, each with the reason it is generated.
+AUDIT_ONLY = {
+    'motion_rates': 'eqs. 9 and 11 in s, checked against eq. 15 by the tests; the simulation integrates the platform DCM and the specific force instead',
+    'gravity_spherical': 'gravity model of eq. 15 (inside oscillation_rates), used by the tests',
+    'specific_force_platform_linear': 'eq. 17 to first order in the tilts, for the audit; the simulation uses the exact specific_force_platform',
+    'specific_force_stationary': 'eq. 18 (eq. 17 at rest), for the audit and the notebook',
+    'tilt_kinematics_stationary': 'eq. 19, first-order kinematics behind eqs. 28-36; the simulation integrates the DCM',
+    'alignment_tilts': 'eq. 20, first order; platform.initial_state levels the platform exactly (mass or plumb vertical) instead',
+    'r_alignment': 'eq. 24; NOT YET CALLED (issue 12 open): platform.initial_state sets p, q numerically and r = 0 (eq. 25)',
+    'nav_initial_tilt_rates': 'eq. 27, initial tilt rates of the analytic solution (eqs. 32, 36), used in the derivation',
+    'table2_accel_bias': 'Table 2 closed form, audited and checked against the Schuler loop by the tests; the strapdown curves are simulated (strapdown.py), not evaluated from Table 2',
+    'table2_initial_tilt': 'Table 2 closed form, audited and checked against the Schuler loop by the tests; the strapdown curves are simulated (strapdown.py), not evaluated from Table 2',
+    'table2_scale_factor': 'Table 2 closed form, audited and checked against the Schuler loop by the tests; the strapdown curves are simulated (strapdown.py), not evaluated from Table 2',
+    'table2_gyro_drift': 'Table 2 closed form, audited and checked against the Schuler loop by the tests; the strapdown curves are simulated (strapdown.py), not evaluated from Table 2',
+    'table2_initial_velocity': 'Table 2 closed form, audited and checked against the Schuler loop by the tests; the strapdown curves are simulated (strapdown.py), not evaluated from Table 2',
+    'table2_initial_azimuth': 'Table 2 closed form, audited and checked against the Schuler loop by the tests; the strapdown curves are simulated (strapdown.py), not evaluated from Table 2',
+}
 
 
 def motion_rates(x, y, z, u, v, w, p, q, r, f1, f2, f3, g1, g2, g3):
@@ -47,6 +65,29 @@ def gravity_spherical(x, y, z, GM):
     out1 = -_x0*y
     out2 = -_x0*z
     return _broadcast(out0, out1, out2)
+
+
+def radius_rates_from_velocity(u, v, z):
+    """Eq. 13 (the definitions eq. 15 is written in): omega_x = -v/z, omega_y = u/z.
+    Returns (omega_x, omega_y)."""
+    out0 = -v/z
+    out1 = u/z
+    return _broadcast(out0, out1)
+
+
+def tilts_from_position(x, y, R_G):
+    """Eq. 14 (the definitions eq. 15 is written in): phi_x = y/R_G, phi_y = -x/R_G.
+    Returns (phi_x, phi_y)."""
+    out0 = y/R_G
+    out1 = -x/R_G
+    return _broadcast(out0, out1)
+
+
+def position_from_tilts(phi_x, phi_y, R_G):
+    """Eq. 14 solved for the position: x = -R_G phi_y, y = R_G phi_x. Returns (x, y)."""
+    out0 = -R_G*phi_y
+    out1 = R_G*phi_x
+    return _broadcast(out0, out1)
 
 
 def platform_commands_rates(f1, f2, z):

@@ -40,6 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from pipeline.generated import frames
 from pipeline.generated import platform_drift as gen
 from pipeline.platform_drift.trajectory import Trajectory, c3
 
@@ -81,7 +82,7 @@ def initial_state(traj: Trajectory, level: str) -> InitialState:
         c_si = nwu @ c3(traj.psi0)
     elif level == "plumb":
         up = tr.f_i / np.linalg.norm(tr.f_i)
-        a1 = nwu @ np.array([np.cos(traj.psi0), np.sin(traj.psi0), 0.0])
+        a1 = nwu @ c3(traj.psi0)[:, 0]
         a1 = a1 - up * (a1 @ up)
         a1 /= np.linalg.norm(a1)
         c_si = np.column_stack((a1, np.cross(up, a1), up))
@@ -91,17 +92,18 @@ def initial_state(traj: Trajectory, level: str) -> InitialState:
     p0, q0, _ = c_si.T @ w_i
     x, y, z = c_si.T @ tr.r_i
     u, v, _ = c_si.T @ tr.v_i
-    rg = traj.rho
+    omega_x, omega_y = gen.radius_rates_from_velocity(u, v, z)  # eq. 13
+    phi_x, phi_y = gen.tilts_from_position(x, y, traj.rho)  # eq. 14
     c_s_mn = nwu.T @ c_si  # C_s^{mN}
     psi = float(np.arctan2(c_s_mn[1, 0], c_s_mn[0, 0]))
     return InitialState(
         c_si=c_si,
         p=float(p0),
         q=float(q0),
-        omega_x=float(-v / z),
-        omega_y=float(u / z),
-        phi_x=float(y / rg),
-        phi_y=float(-x / rg),
+        omega_x=float(omega_x),
+        omega_y=float(omega_y),
+        phi_x=float(phi_x),
+        phi_y=float(phi_y),
         lat=tr.lat,
         lon=tr.lon,
         psi=psi,
@@ -147,7 +149,7 @@ def make_rhs(traj: Trajectory, drift: np.ndarray):
         # accelerometers: true specific force in the physical platform frame
         f = traj.specific_force_in(tr, C)
         # algorithm: known altitude gives z (eq. 14 for x, y)
-        x, yy = -rg * fy, rg * fx
+        x, yy = gen.position_from_tilts(fx, fy, rg)
         z = np.sqrt(rho * rho - x * x - yy * yy)
         p_dot, q_dot = gen.platform_commands_rates(f[:, 0], f[:, 1], z)  # eq. 12
         r = r_cmd
@@ -155,7 +157,8 @@ def make_rhs(traj: Trajectory, drift: np.ndarray):
         _, _, fx_dot, fy_dot = gen.oscillation_rates(
             wx, wy, fx, fy, p, q, r, p_dot, q_dot, z, 0.0, rg, gm
         )
-        z_dot = -(x * (-rg * fy_dot) + yy * (rg * fx_dot)) / z
+        x_dot, y_dot = gen.position_from_tilts(fx_dot, fy_dot, rg)  # eq. 14, differentiated
+        z_dot = -(x * x_dot + yy * y_dot) / z
         wx_dot, wy_dot, _, _ = gen.oscillation_rates(
             wx, wy, fx, fy, p, q, r, p_dot, q_dot, z, z_dot, rg, gm
         )
@@ -168,11 +171,7 @@ def make_rhs(traj: Trajectory, drift: np.ndarray):
             out[:, col + 2] = psi_dot
         # physical platform: commanded rates plus drift
         w = np.column_stack((p, q, np.full(n, r_cmd))) + drift
-        wx_m = np.zeros((n, 3, 3))
-        wx_m[:, 0, 1], wx_m[:, 0, 2] = -w[:, 2], w[:, 1]
-        wx_m[:, 1, 0], wx_m[:, 1, 2] = w[:, 2], -w[:, 0]
-        wx_m[:, 2, 0], wx_m[:, 2, 1] = -w[:, 1], w[:, 0]
-        out[:, :9] = (C @ wx_m).reshape(n, 9)
+        out[:, :9] = (C @ frames.skew(w[:, 0], w[:, 1], w[:, 2])).reshape(n, 9)
         out[:, 9] = p_dot
         out[:, 10] = q_dot
         out[:, 11] = wx_dot

@@ -46,6 +46,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.atomic import write_csv, write_json
+from pipeline.generated import frames
 from pipeline.platform_drift import analytic
 from pipeline.platform_drift import platform as pf
 from pipeline.platform_drift import strapdown as sd
@@ -129,7 +130,7 @@ def simulate_errors(
             "strapdown": float(curves["none", "strapdown"].max()),
         }
     ground = [traj.at(float(x)) for x in t[:: max(1, len(t) // 720)]]
-    we = np.array([0.0, 0.0, sc.earth.omega_e])
+    we = frames.earth_rate_e(sc.earth.omega_e)
     info["max_ground_speed_m_s"] = float(
         max(np.linalg.norm(g.v_i - np.cross(we, g.r_i)) for g in ground)
     )

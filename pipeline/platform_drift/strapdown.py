@@ -24,6 +24,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from pipeline.generated import frames
 from pipeline.platform_drift.trajectory import Trajectory
 
 __all__ = ["simulate", "N_STATE", "NWU_TO_NED"]
@@ -33,13 +34,8 @@ NWU_TO_NED = np.diag([1.0, -1.0, -1.0])
 
 
 def _skew(w: np.ndarray) -> np.ndarray:
-    """[w x] for each row of w (n x 3) -> n x 3 x 3."""
-    n = w.shape[0]
-    m = np.zeros((n, 3, 3))
-    m[:, 0, 1], m[:, 0, 2] = -w[:, 2], w[:, 1]
-    m[:, 1, 0], m[:, 1, 2] = w[:, 2], -w[:, 0]
-    m[:, 2, 0], m[:, 2, 1] = -w[:, 1], w[:, 0]
-    return m
+    """[w x] for each row of w (n x 3) -> n x 3 x 3 (the generated ``frames.skew``)."""
+    return frames.skew(w[:, 0], w[:, 1], w[:, 2])
 
 
 def make_rhs(traj: Trajectory, drift_b: np.ndarray):
@@ -57,9 +53,8 @@ def make_rhs(traj: Trajectory, drift_b: np.ndarray):
         Y = y.reshape(n, N_STATE)
         C = Y[:, :9].reshape(n, 3, 3)
         vn, ve, lat = Y[:, 9], Y[:, 10], Y[:, 11]
-        cl, sl = np.cos(lat), np.sin(lat)
-        w_ie = np.column_stack((we * cl, np.zeros(n), -we * sl))
-        w_en = np.column_stack((ve / rho, -vn / rho, -ve * sl / cl / rho))
+        w_ie = frames.earth_rate_n(we, lat)
+        w_en = frames.transport_rate_n_velocity(vn, ve, lat, rho)
         w_in = w_ie + w_en
         w_meas = w_b[None, :] + drift_b
         c_dot = C @ _skew(w_meas) - _skew(w_in) @ C
@@ -74,8 +69,9 @@ def make_rhs(traj: Trajectory, drift_b: np.ndarray):
         out[:, :9] = c_dot.reshape(n, 9)
         out[:, 9] = a[:, 0]
         out[:, 10] = a[:, 1]
-        out[:, 11] = vn / rho
-        out[:, 12] = ve / (rho * cl)
+        latlon_dot = frames.latlon_rates(vn, ve, lat, rho)
+        out[:, 11] = latlon_dot[:, 0]
+        out[:, 12] = latlon_dot[:, 1]
         return out.ravel()
 
     return rhs
@@ -94,7 +90,11 @@ def simulate(
     n = drift_b.shape[0]
     tr = traj.at(float(t_eval[0]))
     c_bn = NWU_TO_NED @ tr.nwu_i.T @ traj.body_i(tr)
-    v_ned = NWU_TO_NED @ tr.nwu_i.T @ (tr.v_i - np.cross([0.0, 0.0, traj.earth.omega_e], tr.r_i))
+    v_ned = (
+        NWU_TO_NED
+        @ tr.nwu_i.T
+        @ (tr.v_i - np.cross(frames.earth_rate_e(traj.earth.omega_e), tr.r_i))
+    )
     row = np.concatenate([c_bn.ravel(), v_ned[:2], [tr.lat, tr.lon]])
     sol = solve_ivp(
         make_rhs(traj, drift_b),

@@ -41,6 +41,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from pipeline.generated import frames
 from pipeline.generated import platform_drift as gen
 
 __all__ = ["Earth", "Path", "Truth", "Trajectory", "c3", "haversine"]
@@ -89,9 +90,11 @@ class Truth:
 
 
 def c3(psi: float) -> np.ndarray:
-    """The paper's C3(psi) (eq. 2): maps coordinates of a frame turned by +psi about axis 3."""
-    c, s = math.cos(psi), math.sin(psi)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    """The paper's C3(psi) (eq. 2): maps coordinates of a frame turned by +psi about axis 3.
+
+    The transpose of the generated frame rotation ``frames.rot_z(psi)``.
+    """
+    return frames.rot_z(psi).T
 
 
 def haversine(lat1, lon1, lat2, lon2) -> np.ndarray:
@@ -171,10 +174,9 @@ class Trajectory:
         lam = lon + e.omega_e * t
         lam_d, lam_dd = p.dlon * sd + e.omega_e, p.dlon * sdd
         cl, sl = math.cos(lat), math.sin(lat)
-        cL, sL = math.cos(lam), math.sin(lam)
-        up = np.array([cl * cL, cl * sL, sl])
-        north = np.array([-sl * cL, -sl * sL, cl])
-        east = np.array([-sL, cL, 0.0])
+        # rows of [T]^{NE} at the inertial longitude: north, east, down in inertial axes
+        mat_n_i = frames.mat_ne(lat, lam)
+        north, east, up = mat_n_i[0], mat_n_i[1], -mat_n_i[2]
         r_i = rho * up
         v_i = rho * (lat_d * north + lam_d * cl * east)
         a_i = rho * (
@@ -184,7 +186,8 @@ class Trajectory:
         )
         f_i = a_i + (e.gm / rho**2) * up
         nwu = np.column_stack((north, -east, up))
-        w_nwu = np.array([lam_d * cl, lat_d, lam_d * sl])
+        # inertial rate of NED (transport rate at the inertial longitude rate), in NWU axes
+        w_nwu = frames.transport_rate_n(lat, lat_d, lam_d) * np.array([1.0, -1.0, -1.0])
         # body yaw follows the course: chi_dot = -dlat dlon sin(lat) lat_dot / (dlat^2 + dlon^2 cos^2)
         chi = self.course(lat)
         den = p.dlat**2 + (p.dlon * cl) ** 2

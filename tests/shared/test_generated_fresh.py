@@ -57,3 +57,25 @@ def test_generated_module_is_fresh(slug, generated_source, monkeypatch, capsys):
         f"`python -m {paper.generator_module} --check` fails although {paper.generated} is fresh: "
         f"its default output is not {paper.generated}? {capsys.readouterr().err}"
     )
+
+
+def test_frames_module_is_fresh(generated_source, monkeypatch, capsys):
+    """pipeline/generated/frames.py (shared by every paper) is what derivations/frames.py
+    generates now, and ``python -m derivations.generate_frames --check`` reads that file."""
+    module = "derivations.generate_frames"
+    generator = importlib.import_module(module)
+    path = generator.OUTPUT
+    rel = path.relative_to(ROOT)
+    fresh = generated_source(module)
+    command = f"PYTHONPATH=. .venv/bin/python -m {module}"
+    if not path.is_file():
+        pytest.fail(f"{rel} is missing: run `{command}` and commit it", pytrace=False)
+    current = path.read_text(encoding="utf-8")
+    if current != fresh:
+        pytest.fail(
+            f"{rel} is stale (differs from {module}.source()): run `{command}` and commit it\n"
+            f"{_diff(current, fresh, str(rel))}",
+            pytrace=False,
+        )
+    monkeypatch.setattr(generator, "source", lambda: fresh)
+    assert generator.main(["--check"]) == 0, capsys.readouterr().err
