@@ -161,5 +161,6 @@ PAPER = Paper(
     steps=STEPS,
     settings_schema="altimeter_attitude_config",
     report="pipeline.altimeter_attitude.report:report",
+    discussion="pipeline.altimeter_attitude.discussion:discussion",
     math_stems=MATH_STEMS,
 )

@@ -144,4 +144,5 @@ PAPER = Paper(
     steps=STEPS,
     settings_schema="north_finding_config",
     report="pipeline.north_finding.report:report",
+    discussion="pipeline.north_finding.discussion:discussion",
 )

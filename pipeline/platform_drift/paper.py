@@ -125,4 +125,5 @@ PAPER = Paper(
     steps=STEPS,
     notebook_inputs=lambda ctx: [f"{ctx.results}/{SWEEP_SCENARIO}/errors.csv"],
     report="pipeline.platform_drift.report:report",
+    discussion="pipeline.platform_drift.discussion:discussion",
 )

@@ -104,23 +104,22 @@ def introduction(papers: Sequence[PaperParts], appendix_names: Sequence[str]) ->
 
 
 def discussion(papers: Sequence[PaperParts]) -> Section:
-    """The discussion: the causes across the papers, then each paper's own part."""
+    """The discussion: what was easy, what was hard and what each paper left open."""
     failing = sum(
         p.score.numbers.get("not_reproduced", 0) + p.score.claims.get("not_upheld", 0)
         for p in papers
     )
-    lines = []
-    for p in papers:
-        s = p.score.summary
-        if s is not None:
-            lines.append(f"{p.title}: {s.sentences[2]}")
+    identified = sum(
+        1
+        for p in papers
+        if p.score.summary is not None and not p.score.summary.sentences[2].startswith("Cause: not")
+    )
     blocks: list[Block] = [
         Paragraph(
-            f"Across the papers {plural(failing, 'verdict')} fail. What was easy, what was hard "
-            "and what each paper left open follow, paper by paper; the causes, as the first "
-            "page ranks them:"
-        ),
-        Bullets(lines),
+            f"Across the papers {plural(failing, 'verdict')} fail; the first page groups them by "
+            f"root cause ({identified} of {plural(len(papers), 'paper')} with a cause "
+            "identified). What was easy, what was hard and what each paper left open follow."
+        )
     ]
     subs = [discussion_section(p, f"discussion-{p.slug}") for p in papers]
     return Section("discussion", "Discussion", blocks, subs)

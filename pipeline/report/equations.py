@@ -9,11 +9,14 @@ the :class:`EquationTable` with the printed, derived and residual forms
 >>> short_statement("typo of the paper: the rows drop sin(phi) (-cos t sin th); the product "
 ...                 "follows")
 'typo of the paper: the rows drop sin(phi) (-cos t sin th)'
+>>> short_statement("the rows of H must carry g, as in eq. 20. The pipeline uses H")
+'the rows of H must carry g, as in eq. 20'
 """
 
 from __future__ import annotations
 
 import json
+import re
 from collections.abc import Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -37,6 +40,8 @@ __all__ = [
 
 #: the longest short statement of a differing equation (the full note is in the appendix)
 STATEMENT_CHARS = 240
+#: a full stop that ends an abbreviation, not a sentence
+_ABBREVIATION = re.compile(r"(?:\b(?:eqs?|Eqs?|Figs?|Sec|Secs|no|cf|vs|approx)|\be\.g|\bi\.e)\.$")
 
 
 def formless(row: EquationRow) -> bool:
@@ -87,7 +92,8 @@ def short_statement(note: str, limit: int = STATEMENT_CHARS) -> str:
     depth = 0
     for i, c in enumerate(text):
         depth += (c == "(") - (c == ")")
-        if depth == 0 and (c == ";" or (c == "." and text[i + 1 : i + 2] == " ")):
+        ends = c == "." and text[i + 1 : i + 2] == " " and not _ABBREVIATION.search(text[: i + 1])
+        if depth == 0 and (c == ";" or ends):
             text = text[:i]
             break
     if len(text) > limit:

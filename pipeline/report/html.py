@@ -46,6 +46,8 @@ body { font-family: system-ui, -apple-system, "Segoe UI", Roboto, "DejaVu Sans",
 h1 { font-size: 1.7em; margin-bottom: 0.2em; }
 h2 { border-bottom: 2px solid #ccc; padding-bottom: 0.15em; margin-top: 2em; }
 h3 { margin-top: 1.5em; }
+h2 a, h3 a, h4 a, h5 a { color: inherit; text-decoration: none; }
+span.secno { color: #666; margin-right: 0.4em; font-variant-numeric: tabular-nums; }
 section { margin-bottom: 1em; }
 nav.toc ul { columns: 2; }
 table.data { border-collapse: collapse; margin: 0.5em 0 1em 0; font-size: 0.9em; }

@@ -23,7 +23,7 @@ import pandas as pd
 import yaml
 
 from pipeline.report.model import FAILURE_WORDS, Block, Paragraph, Section, Table
-from pipeline.report.numbers import (
+from pipeline.report.precision import (
     compact_reason,
     compact_tolerance,
     reproduced_header,

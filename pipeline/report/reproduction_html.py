@@ -31,8 +31,6 @@ body { max-width: 1400px; }
 header.title h1 { font-size: 2em; margin-bottom: 0.1em; }
 header.title p.subtitle { font-size: 1.1em; color: #333; margin-top: 0; }
 header.title p.generated { color: #666; font-size: 0.9em; }
-h2 a, h3 a, h4 a, h5 a { color: inherit; text-decoration: none; }
-span.secno { color: #666; margin-right: 0.4em; font-variant-numeric: tabular-nums; }
 table.scoreboard { border-collapse: collapse; width: 100%; margin: 0.6em 0 1.4em 0;
                    font-size: 0.95em; }
 table.scoreboard caption { text-align: left; font-weight: bold; font-size: 1.15em;

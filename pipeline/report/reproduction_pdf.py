@@ -3,7 +3,7 @@
 ``render_typst(doc)`` turns the shared content model (:mod:`pipeline.report.document`) into one
 Typst source: A4, a title page with the abstract and each paper's summary and main claims
 (:mod:`pipeline.report.typst_front`), a table of contents, the numbered sections (each
-top-level section but the references starts a page; :mod:`pipeline.report.typst_blocks`), then the appendices
+top-level section but the discussion and the references starts a page; :mod:`pipeline.report.typst_blocks`), then the appendices
 numbered A, B, ... with the equation audits typeset as mathematics from the SymPy ``srepr``
 fields (:mod:`pipeline.report.typst_equations`, :mod:`pipeline.report.typst_math`).
 
@@ -44,7 +44,7 @@ __all__ = [
 #: the heading before the appendices (unnumbered, in the contents)
 APPENDIX_HEADING = "Appendices"
 #: top-level sections that continue the page before them (every other one starts a page)
-CONTINUES = frozenset({"references"})
+CONTINUES = frozenset({"discussion", "references"})
 
 
 @dataclass
