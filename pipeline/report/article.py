@@ -30,6 +30,7 @@ def abstract(papers: Sequence[PaperParts]) -> str:
     n_main = sum(marks.values())
     n_eq = sum(len(p.equations) for p in papers)
     n_err = sum(p.score.differs.get("paper_error", 0) for p in papers)
+    n_classified = sum(n for p in papers for k, n in p.score.differs.items() if k)
     n_differs = sum(p.score.audit.get("differs", 0) for p in papers)
     numbers = [n for p in papers for n in [p.score.numbers]]
     n_num = sum(sum(n.values()) for n in numbers)
@@ -45,7 +46,9 @@ def abstract(papers: Sequence[PaperParts]) -> str:
         f"{'is' if marks['Re'] == 1 else 'are'} reproduced ([Re]), {marks['not_Re']} "
         f"{'is' if marks['not_Re'] == 1 else 'are'} not ([¬Re]) and {marks['not_checkable']} "
         f"cannot be checked from what the papers publish. In all, {n_differs} of {n_eq} printed "
-        f"equations differ from the derivation ({n_err} classified as errors of the paper), "
+        f"equations differ from the derivation ("
+        + (f"{n_err} of them errors of the paper" if n_classified else "not yet classified by kind")
+        + "), "
         f"{n_good} of {n_num} published numbers are reproduced and {n_upheld} of "
         f"{plural(n_claim, 'claim verdict')} are upheld. Each paper's main claims and what "
         "was and was not reproduced follow."

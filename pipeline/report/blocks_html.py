@@ -107,10 +107,11 @@ def _table(t: Table, anchors: Anchors | None = None, status_rows: bool = False) 
     parts = ['<div class="scroll"><table class="data">\n']
     if t.caption:
         parts.append(f"<caption>{H.escape(t.caption)}</caption>\n")
+    notes = len(t.notes) == len(t.rows) and any(n.strip() for n in t.notes)
     if any(t.columns):
-        parts.append(
-            "<thead><tr>" + "".join(f"<th>{_cell(c)}</th>" for c in t.columns) + "</tr></thead>\n"
-        )
+        head = "".join(f"<th>{_cell(c)}</th>" for c in t.columns)
+        head += "<th>note</th>" if notes else ""
+        parts.append(f"<thead><tr>{head}</tr></thead>\n")
     parts.append("<tbody>\n")
     for i, row in enumerate(t.rows):
         if status_rows and t.row_status:
@@ -122,6 +123,8 @@ def _table(t: Table, anchors: Anchors | None = None, status_rows: bool = False) 
         cells = "".join(
             f"<td{_NUM_ATTR if _NUMERIC.match(c.strip()) else ''}>{_cell(c)}</td>" for c in row
         )
+        if notes:
+            cells += f'<td class="note">{H.escape(plain_words(t.notes[i]))}</td>'
         parts.append(f"<tr{cls}>{cells}</tr>\n")
     parts.append("</tbody>\n</table></div>\n")
     return "".join(parts)

@@ -76,13 +76,16 @@ class Bullets:
 class Table:
     """A table of plain-text cells. ``highlight`` lists the row indices to emphasise (rows
     whose verdict or status is a failure); ``row_status`` (empty, or one word per row) is the
-    verdict or status word of each row, which a page colours its row by."""
+    verdict or status word of each row, which a page colours its row by; ``notes`` (empty, or
+    one text per row) the detail of each row that the HTML shows in a last column and the
+    PDF leaves to it (the PDF's main part has a page budget)."""
 
     columns: list[str]
     rows: list[list[str]]
     caption: str = ""
     highlight: list[int] = field(default_factory=list)
     row_status: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
 
 
 @dataclass(frozen=True)

@@ -260,7 +260,7 @@ def supporting_section(p: PaperParts, title: str | None = None) -> Section | Non
 
 
 def further_sections(p: PaperParts) -> list[Section]:
-    """The paper's page sections that feed no part of the template, and its own published
-    tables (with every note): the page's last appendix."""
-    used = _used(p) - set(p.report.parts.get("published") or [])
+    """The paper's page sections that feed no part of the template (its own published tables
+    too: the template's tables supersede them): the page's last appendix."""
+    used = _used(p)
     return [prefixed(s, p.slug) for s in p.report.sections if s.id not in used]

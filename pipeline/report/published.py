@@ -91,7 +91,8 @@ def published_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Sect
             "precision plus two digits, or for a statistical value the median of our Monte "
             "Carlo and its 5-95 % band (MC median [5-95 %]); tolerance: what the verdict allowed "
             "(for a statistical value, the 0.5-99.5 % range of the Monte Carlo); why: how the "
-            "verdict was reached. Grouped by the paper's table or figure."
+            "verdict was reached (the HTML report adds each row's note). Grouped by the paper's "
+            "table or figure."
         )
     ]
     with_cause = bool(_col(numbers, "cause").str.strip().any())
@@ -100,8 +101,9 @@ def published_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Sect
         groups.setdefault(group_label(items.get(str(r["id"]).split("/")[0])), []).append(i)
     for label in sorted(groups, key=_sort_key):
         rows = numbers.loc[groups[label]]
-        cells, reasons, highlight, status = [], [], [], []
+        cells, reasons, highlight, status, notes = [], [], [], [], []
         for k, (_, r) in enumerate(rows.iterrows()):
+            notes.append(str(r["note"]))
             where, what = names.what(r)
             tol, tol_reason = compact_tolerance(str(r.get("tolerance", "")), str(r["published"]))
             if tol_reason and tol_reason not in reasons:
@@ -136,7 +138,7 @@ def published_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Sect
                 c[0] = c[0][: -len(", " + q)]
         columns = ["item", "published", reproduced_header(list(rows["kind"].astype(str)))]
         columns += ["tolerance", "verdict", "why"] + (["cause"] if with_cause else [])
-        blocks.append(Table(columns, cells, caption, highlight, status))
+        blocks.append(Table(columns, cells, caption, highlight, status, notes))
         if reasons:
             blocks.append(Paragraph("Tolerance: " + "; ".join(reasons) + "."))
     return Section(sid, "Published numbers", blocks)
@@ -149,8 +151,9 @@ def claims_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Section
     if claims.empty:
         return Section(sid, "Claims", [Paragraph("The published-values file lists no claims.")])
     with_cause = bool(_col(claims, "cause").str.strip().any())
-    cells, highlight, status = [], [], []
+    cells, highlight, status, notes = [], [], [], []
     for k, (_, r) in enumerate(claims.iterrows()):
+        notes.append(str(r["note"]))
         row = [
             names.claim(r, whole="/" not in str(r["id"])),
             plain_words(str(r["reproduced"])),
@@ -169,4 +172,5 @@ def claims_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Section
         "Each claim is the paper's sentence, judged by a test over our results (the test and "
         "its threshold are named); a claim about several curves is judged on each."
     )
-    return Section(sid, "Claims", [intro, Table(columns, cells, "Claims", highlight, status)])
+    table = Table(columns, cells, "Claims", highlight, status, notes)
+    return Section(sid, "Claims", [intro, table])

@@ -155,7 +155,10 @@ def _scoreboard(rows: Sequence[ScoreRow], numbers: dict[str, str] | None = None)
                 extra = ""
                 if w == "differs" and n:
                     errors = int(r.differs.get("paper_error", 0))
-                    extra = f'<span class="kinds">{errors} {"error" if errors == 1 else "errors"} of the paper</span>'
+                    words = f"{errors} {'error' if errors == 1 else 'errors'} of the paper"
+                    if not any(k and m for k, m in r.differs.items()):
+                        words = "not classified"
+                    extra = f'<span class="kinds">{words}</span>'
                 cells.append(
                     f'<td class="{" ".join(cls)}" data-group="{attr}" data-word="{w}">{n}{extra}</td>'
                 )

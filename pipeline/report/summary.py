@@ -15,6 +15,7 @@ words, a claim by its sentence and where the paper makes it.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -48,8 +49,6 @@ class RowNames:
 
     def words(self, text: str) -> str:
         """Every token of ``text`` that the file names, in the paper's words."""
-        import re
-
         return re.sub(
             r"[A-Za-z0-9_]+",
             lambda m: self.names.get(m.group(0), m.group(0).replace("_", " ")),
@@ -83,7 +82,10 @@ class RowNames:
         where = str(claim.get("label") or "")
         curve = self.words(variant) if variant and not whole else ""
         if short:
-            return f"the claim of {where or 'the paper'}" + (f", {curve}" if curve else "")
+            place = where or "the paper"
+            if re.match(r"^[A-Z][a-z]+\b(?!\.)", place):  # "Abstract": the Abstract
+                place = f"the {place}"
+            return f"the claim of {place}" + (f", {curve}" if curve else "")
         where = "; ".join(w for w in (where, curve) if w)
         return f"“{text}” ({where})" if where else f"“{text}”"
 

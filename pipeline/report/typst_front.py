@@ -52,11 +52,16 @@ def _counts(r: BlockRenderer, rows: list[ScoreRow]) -> str:
         cells += [str(row.numbers.get(k, 0)) for k in _NUMBERS]
         cells += [str(row.claims.get(k, 0)) for k in _CLAIMS]
         errors = int(row.differs.get("paper_error", 0))
+        classified = any(n for k, n in row.differs.items() if k)
         shown = []
         for i, c in enumerate(cells):
             if i == 1 and c != "0":  # a difference is red only as an error of the paper
                 colour = "bad" if errors else "partial"
-                note = f"{errors} {'error' if errors == 1 else 'errors'} of the paper"
+                note = (
+                    f"{errors} {'error' if errors == 1 else 'errors'} of the paper"
+                    if classified
+                    else "not classified"
+                )
                 shown.append(
                     f'[#text(fill: {colour}, weight: "bold")[{c}] \\ #text(size: 6.5pt)[{note}]]'
                 )

@@ -393,10 +393,11 @@ def test_section_titles_and_pages_match_the_html(report, _):
         found = text.find(f"{num}{title}".replace(" ", ""), pos)
         assert found >= 0, f"section {num} {title!r} not found in the PDF after offset {pos}"
         pos = found + 1
-    # every top-level section but the references starts a page, and so does each appendix
-    # but the first (it follows the heading "Appendices")
+    # every top-level section but those that continue the page (R.CONTINUES) starts a page,
+    # and so does each appendix but the first (it follows the heading "Appendices")
     top = [f"{num} {title}" for num, title in expected if "." not in num]
-    continues = {f"{num} {title}" for num, title in expected if title == "References"}
+    ids = [s.id for s in doc.sections] + [s.id for s in doc.appendices]
+    continues = {t for t, i in zip(top, ids, strict=True) if i in R.CONTINUES}
     continues.add(top[len(doc.sections)])
     starts = [
         t for t in top if any(p.replace(" ", "").startswith(t.replace(" ", "")) for p in body)
