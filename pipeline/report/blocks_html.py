@@ -115,7 +115,8 @@ def _table(t: Table, anchors: Anchors | None = None, status_rows: bool = False) 
     parts.append("<tbody>\n")
     for i, row in enumerate(t.rows):
         if status_rows and t.row_status:
-            cls = f' class="{H.css_class(t.row_status[i])} t-{tone(t.row_status[i])}"'
+            # a row's status word; "differs" (of unknown kind) is amber, not a failure's red
+            cls = f' class="{H.css_class(t.row_status[i])}"'
         else:
             cls = ' class="bad"' if i in hl else ""
         if keyed and row:

@@ -59,12 +59,14 @@ table.data td.num { text-align: right; font-variant-numeric: tabular-nums; white
 tr.v-reproduced td, tr.v-consistent td, tr.v-upheld td, tr.v-match td { background: #eaf6ea; }
 tr.v-not_reproduced td, tr.v-not_upheld td, tr.t-bad td { background: #fbe3e1; }
 tr.v-not_checkable td { background: #f1f1f1; color: #555; }
-tr.v-missing td, tr.t-partial td { background: #fff4d6; }
+tr.v-missing td, tr.t-partial td, tr.v-differs td { background: #fff4d6; }
 span.v-reproduced, span.v-consistent, span.v-upheld, span.v-match {
   color: #1d6b1d; font-weight: bold; }
 span.v-not_reproduced, span.v-not_upheld, span.t-bad { color: #a3261a; font-weight: bold; }
 span.v-not_checkable { color: #555; font-weight: bold; }
-span.v-missing, span.t-partial { color: #8a5a00; font-weight: bold; }
+span.v-missing, span.t-partial, span.v-differs { color: #8a5a00; font-weight: bold; }
+tr.v-differs.t-bad td { background: #fbe3e1; }
+span.v-differs.t-bad { color: #a3261a; }
 ul.marks { list-style: none; padding-left: 0.2em; }
 ul.marks li { margin: 0.35em 0; }
 span.mark { display: inline-block; min-width: 3.4em; font-weight: bold; }

@@ -22,7 +22,7 @@ from pipeline.atomic import write_text
 from pipeline.paper import Paper
 from pipeline.report import html as H
 from pipeline.report.blocks_html import render_sections, section_numbers
-from pipeline.report.model import Link, ReportInputs, Section
+from pipeline.report.model import Link, PaperReport, ReportInputs, Section
 from pipeline.report.paper_parts import PaperParts, load_parts
 from pipeline.report.paper_section import (
     assumptions_section,
@@ -36,25 +36,51 @@ from pipeline.report.paper_section import (
 __all__ = ["build_page", "main", "page_sections", "page_step", "render_page"]
 
 
+def _unprefixed(sections: list[Section], slug: str, seen: set[str]) -> list[Section]:
+    """The sections with ``<slug>-`` dropped from their ids (on its own page a paper's ids
+    need no prefix: they keep the ids its report gives them), each id unique."""
+
+    def fix(s: Section) -> Section:
+        base = s.id[len(slug) + 1 :] if s.id.startswith(f"{slug}-") else s.id
+        sid, k = base, 2
+        while sid in seen:
+            sid, k = f"{base}-{k}", k + 1
+        seen.add(sid)
+        return Section(sid, s.title, s.blocks, [fix(c) for c in s.subsections])
+
+    return [fix(s) for s in sections]
+
+
 def page_sections(p: PaperParts) -> tuple[list[Section], list[Section]]:
     """(sections, appendices) of a paper's page: the template's main sections and the
-    discussion; the equation forms, the assumptions and the paper's further sections."""
+    discussion; the equation forms, the results the findings rest on, the assumptions and
+    the paper's further sections."""
+    seen: set[str] = set()
+    sections, appendices = _page_sections(p)
+    return _unprefixed(sections, p.slug, seen), _unprefixed(appendices, p.slug, seen)
+
+
+def _page_sections(p: PaperParts) -> tuple[list[Section], list[Section]]:
     main = paper_section(p, "Appendix A", page=True)
-    sections = [*main.subsections, discussion_section(p, "discussion", "Discussion")]
+    sections = [*main.subsections, discussion_section(p, f"{p.slug}-discussion", "Discussion")]
     appendices = [forms_section(p, "Equation audit: the forms")]
-    supporting = supporting_section(p, "Supporting results")
+    supporting = supporting_section(p, "Supporting results", flatten=False)
     appendices += [supporting] if supporting is not None else []
     appendices.append(assumptions_section(p, "Assumptions where the paper is silent"))
     further = further_sections(p)
     if further:
-        appendices.append(Section("further", "The paper's further results", [], further))
+        appendices.append(Section(f"{p.slug}-further", "The paper's own sections", [], further))
     return sections, appendices
 
 
-def render_page(paper: Paper, parts: PaperParts) -> str:
-    """The page as an HTML string: title, reference, contents, then the sections."""
+def render_page(paper: Paper, parts: PaperParts | PaperReport) -> str:
+    """The page as an HTML string: title, reference, contents, then the sections. Given the
+    paper's :class:`PaperReport` alone (no results read), its sections as they are."""
     title = f"Reproduction report: {paper.title}"
-    sections, appendices = page_sections(parts)
+    if isinstance(parts, PaperReport):
+        sections, appendices = list(parts.sections), []
+    else:
+        sections, appendices = page_sections(parts)
     numbers = section_numbers(sections, appendices)
     back = Link("the combined report", "reproduction.html")
     body = (

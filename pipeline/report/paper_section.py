@@ -7,7 +7,8 @@ Figures (the paper's, in its numbering), Findings beyond the paper (with the fig
 paper lacks). Discussion: the paper's part of it. Appendices: the equation forms, the
 assumptions, and on the page the paper's further sections.
 
-The paper's page sections are reused as they are, their ids prefixed with the paper's slug;
+The paper's page sections are reused as they are, their ids prefixed with the paper's slug
+(its own page drops the prefix again);
 a subsection holding one table becomes that table, and nesting deeper than two levels is
 merged into its parent (the PDF's heading depth stays at three).
 """
@@ -15,7 +16,6 @@ merged into its parent (the PDF's heading depth stays at three).
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import replace
 
 from pipeline.report.equations import equation_appendix, equation_section
 from pipeline.report.model import (
@@ -23,7 +23,6 @@ from pipeline.report.model import (
     Figure,
     Link,
     MainClaims,
-    PaperReport,
     Paragraph,
     Section,
     Table,
@@ -247,20 +246,30 @@ def assumptions_section(p: PaperParts, title: str | None = None) -> Section:
     return Section(f"{p.slug}-assumptions", title or p.title, blocks, subs)
 
 
-def supporting_section(p: PaperParts, title: str | None = None) -> Section | None:
+def supporting_section(
+    p: PaperParts, title: str | None = None, flatten: bool = True
+) -> Section | None:
     """The sections the paper lists for its findings after the first: the results that
-    support them (an appendix), None if there are none."""
+    support them (an appendix; each keeps its id and title; ``flatten``: their subsections
+    merged into them, as the PDF's heading depth needs), None if there are none."""
     ids = list(p.report.parts.get("findings") or [])[1:]
     if not ids:
         return None
-    # the same paper, its findings without the first
-    sub = replace(p, report=PaperReport(p.report.sections, {**p.report.parts, "findings": ids}))
-    blocks, subs = _part(sub, "findings")
-    return Section(f"{p.slug}-supporting", title or p.title, blocks, subs)
+    subs = []
+    for sid in ids:
+        sec = p.report.section(sid)
+        if sec is None:
+            raise ValueError(
+                f"paper {p.slug}: report part 'findings' names section {sid!r}, which its "
+                f"report does not have (sections: {[s.id for s in p.report.sections]})"
+            )
+        sec = prefixed(sec, p.slug)
+        subs.append(_flatten_deep(_inline_single_tables(sec), depth=2) if flatten else sec)
+    return Section(f"{p.slug}-supporting", title or p.title, [], subs)
 
 
 def further_sections(p: PaperParts) -> list[Section]:
-    """The paper's page sections that feed no part of the template (its own published tables
-    too: the template's tables supersede them): the page's last appendix."""
-    used = _used(p)
+    """The paper's page sections that feed no part of the template, and its own published
+    tables (with every note of theirs): the page's last appendix."""
+    used = _used(p) - set(p.report.parts.get("published") or [])
     return [prefixed(s, p.slug) for s in p.report.sections if s.id not in used]

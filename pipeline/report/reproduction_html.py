@@ -82,7 +82,8 @@ table.equations dl.forms dd { margin: 0; min-width: 0; }
 table.equations div.m { max-height: 24em; overflow: auto; padding: 0.15em 0; }
 table.equations p.note { margin: 0.2em 0; font-size: 0.9em; color: #333; }
 table.equations tr.v-match td { background: #fff; }
-table.equations tr.v-differs td { background: #fdf0ee; }
+table.equations tr.v-differs td { background: #fff8e6; }
+table.equations tr.v-differs.t-bad td { background: #fdf0ee; }
 table.equations tr.v-not_checkable td { background: #f7f7f7; }
 math { font-size: 1.05em; font-family: "STIX Two Math", "Cambria Math", "Latin Modern Math",
                                        "DejaVu Math TeX Gyre", math; }

@@ -24,12 +24,7 @@ from sympy.printing.printer import Printer
 
 from pipeline.report.typst_symbols import symbol_name, typst_string
 
-__all__ = [
-    "TypstMathPrinter",
-    "symbol_name",
-    "typst_math",
-    "typst_string",
-]
+__all__ = ["TypstMathPrinter", "symbol_name", "typst_math", "typst_string"]
 
 FUNCTIONS = {
     "sin": "sin",

@@ -184,10 +184,12 @@ def test_page_follows_the_template(inputs, tmp_path):
         "Equation audit: the forms",
         "Supporting results",
         "Assumptions where the paper is silent",
-        "The paper's further results",
+        "The paper's own sections",
     ]
     toc = re.search(r'<nav class="toc">(.*?)</nav>', text, re.S).group(1)
-    assert re.findall(r'href="#([^"]+)"', toc)[:2] == ["pendulum-summary", "pendulum-equations"]
+    # on its own page a paper's ids need no prefix
+    assert re.findall(r'href="#([^"]+)"', toc)[:2] == ["summary", "equations"]
+    assert [s.id for s in sections][:2] == ["summary", "equations"]
     # the main claims, marked from the verdict rows; the three sentences in the paper's words
     assert '<span class="mark m-not-re">[¬Re]</span> The small-angle period formula holds.' in text
     assert '<span class="mark m-re">[Re]</span> Mass does not matter.' in text
@@ -237,7 +239,10 @@ def test_paper_section_is_assembled_from_the_papers_parts(inputs):
     # the first findings section is the finding; the others support it (an appendix)
     assert Paragraph("The period grows with amplitude.") in findings.blocks
     assert Paragraph("Ten runs per length.") not in findings.blocks
-    assert Paragraph("Ten runs per length.") in supporting_section(parts).blocks
+    (support,) = supporting_section(parts).subsections
+    assert (
+        support.title == "Supporting runs" and Paragraph("Ten runs per length.") in support.blocks
+    )
     # the published numbers by the paper's table, in its words, at printed precision + 2
     (table,) = [b for b in published.blocks if isinstance(b, Table)]
     assert table.caption == "Table 1: period"
