@@ -119,9 +119,9 @@ def discussion(papers: Sequence[PaperParts]) -> Section:
     )
     blocks: list[Block] = [
         Paragraph(
-            f"Across the papers {plural(failing, 'verdict')} fail; the first page groups them by "
-            f"root cause ({identified} of {plural(len(papers), 'paper')} with a cause "
-            "identified). What was easy, what was hard and what each paper left open follow."
+            "What was easy, what was hard and what each paper left open, paper by paper; the "
+            f"front of the report groups the {plural(failing, 'failing verdict')} by root cause "
+            f"({identified} of {plural(len(papers), 'paper')} with a cause identified)."
         )
     ]
     subs = [discussion_section(p, f"discussion-{p.slug}") for p in papers]
@@ -131,8 +131,5 @@ def discussion(papers: Sequence[PaperParts]) -> Section:
 def references(papers: Sequence[PaperParts], generated_from: str) -> Section:
     """The reproduced papers' citations and this reproduction's version."""
     items = [f"[{k}] {p.title}. {p.citation}." for k, p in enumerate(papers, 1)]
-    items.append(
-        f"[{len(papers) + 1}] This reproduction: the workflow's repository at git describe "
-        f"{generated_from} (reports/ and results/ are written by make reproduce)."
-    )
+    items.append(f"[{len(papers) + 1}] This reproduction, at git describe {generated_from}.")
     return Section("references", "References", [Bullets([i.replace("..", ".") for i in items])])

@@ -161,13 +161,24 @@ def _links(p: PaperParts, page: bool) -> list[Block]:
 
 
 def _summary(p: PaperParts, page: bool) -> Section:
+    """The paper's status, its main claims and three sentences (on its page; the combined
+    report has them on its first page and points there), then the paper's own summary."""
     s = p.score.summary
     blocks: list[Block] = []
-    if s is not None:
+    if s is not None and page:
         blocks.append(Paragraph(f"{s.status}."))
         if s.main_claims:
             blocks.append(MainClaims(list(s.main_claims)))
         blocks += [Paragraph(t) for t in s.sentences]
+    elif s is not None:
+        marks = [m.mark for m in s.main_claims]
+        held = f"; {marks.count('Re')} of {len(marks)} main claims [Re]" if marks else ""
+        blocks.append(
+            Paragraph(
+                f"{s.status}{held}. The main claims with their marks and what was and was not "
+                "reproduced are in the papers in brief, at the front of this report."
+            )
+        )
     own, subs = _part(p, "summary")
     return Section(f"{p.slug}-summary", "Summary", blocks + own + _links(p, page), subs)
 

@@ -130,8 +130,8 @@ def compact_tolerance(tolerance: str, published: str) -> tuple[str, str]:
         return f"[{lo}, {hi}] (MC {m.group(1)}-{m.group(2)} %)", ""
     head, reason = _trailing_parenthesis(text)
     if len(reason) >= 30:
-        return head, reason
-    return text, ""
+        return compact_reason(head), reason
+    return compact_reason(text), ""
 
 
 def _trailing_parenthesis(text: str) -> tuple[str, str]:
@@ -153,13 +153,31 @@ _RANK_REASON = re.compile(
 )
 
 
+#: the engine's wordings (pipeline.verdicts.kinds) and their short forms in a table
+_SHORT = (
+    (re.compile(r"\|ours - printed\| = "), "|ours - printed| "),
+    (re.compile(r"^value: ours \S+ (rounded|truncated) to the printed \S+$"), r"\1 to the printed digits"),
+    (re.compile(r"^value: the printed digits of (\S+) \(rounding: \+-(\S+); truncation: .*\)\)$"),
+     r"the digits of \1 (+-\2 rounded, or truncated)"),
+)  # fmt: skip
+
+
 def compact_reason(reason: str) -> str:
-    """A verdict's reason as a table shows it: a statistical row's as its percentile rank.
+    """A verdict's reason (or an exact tolerance) as a table shows it: a statistical row's as
+    its percentile rank, an exact one's in fewer words.
 
     >>> compact_reason("published value at percentile rank 41.9 of 1000 Monte Carlo trials "
     ...                "(inside [0.5, 99.5])")
     'percentile rank 41.9 (inside)'
+    >>> compact_reason("value: ours 88 rounded to the printed 88")
+    'rounded to the printed digits'
+    >>> compact_reason("value: the printed digits of 88 (rounding: +-0.5; truncation: [88, +1))")
+    'the digits of 88 (+-0.5 rounded, or truncated)'
     """
     text = plain_words(" ".join(str(reason).split()))
     m = _RANK_REASON.match(text)
-    return f"percentile rank {m.group(1)} ({m.group(3)})" if m else text
+    if m:
+        return f"percentile rank {m.group(1)} ({m.group(3)})"
+    for pattern, short in _SHORT:
+        text = pattern.sub(short, text)
+    return text

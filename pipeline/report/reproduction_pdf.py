@@ -2,10 +2,11 @@
 
 ``render_typst(doc)`` turns the shared content model (:mod:`pipeline.report.document`) into one
 Typst source: A4, a title page with the abstract and each paper's summary and main claims
-(:mod:`pipeline.report.typst_front`), a table of contents, the numbered sections (each
-top-level section but the discussion and the references starts a page; :mod:`pipeline.report.typst_blocks`), then the appendices
-numbered A, B, ... with the equation audits typeset as mathematics from the SymPy ``srepr``
-fields (:mod:`pipeline.report.typst_equations`, :mod:`pipeline.report.typst_math`).
+(:mod:`pipeline.report.typst_front`), a table of contents, the numbered sections of the main
+part, flowing from one to the next (:mod:`pipeline.report.typst_blocks`), then the appendices
+numbered A, B, ..., each on a new page, with the equation audits typeset as mathematics from
+the SymPy ``srepr`` fields (:mod:`pipeline.report.typst_equations`,
+:mod:`pipeline.report.typst_math`).
 
 ``write_pdf(doc, path)`` compiles it with the ``typst`` package from PyPI. The output depends on
 nothing but the document and the image files: only the fonts embedded in the typst package are
@@ -43,8 +44,6 @@ __all__ = [
 
 #: the heading before the appendices (unnumbered, in the contents)
 APPENDIX_HEADING = "Appendices"
-#: top-level sections that continue the page before them (every other one starts a page)
-CONTINUES = frozenset({"discussion", "references"})
 
 
 @dataclass
@@ -63,9 +62,7 @@ def _render(doc: Document, root: Path, bad: frozenset[str]) -> Rendered:
     for key, name in FONTS.items():
         preamble = preamble.replace(f"FONT_{key.upper()}", name)
     parts = [preamble, title_page(r, doc), "#counter(page).update(1)"]
-    for k, sec in enumerate(doc.sections):
-        if k and sec.id not in CONTINUES:
-            parts.append("#pagebreak(weak: true)")
+    for sec in doc.sections:  # the main part flows: a section starts below the one before
         parts.extend(r.section(sec, 1))
     if doc.appendices:
         parts.append("#pagebreak(weak: true)")

@@ -43,6 +43,10 @@ __all__ = ["BlockRenderer", "walk"]
 #: a figure beside another: half the text width less the gutter, and at most this tall
 HALF_WIDTH_MM = 82.0
 HALF_HEIGHT_MM = 70.0
+#: a figure drawn on a canvas this wide (pixels; several panels) or twice as wide as tall is
+#: set alone at the text width, at most this tall
+WIDE_PIXELS = 1400
+WIDE_HEIGHT_MM = 98.0
 
 
 def walk(sections: list[Section]) -> Iterator[Section]:
@@ -182,11 +186,36 @@ class BlockRenderer:
 
     # ---- figures --------------------------------------------------------------------------
     def figures(self, figs: list[Figure]) -> str:
-        """Figures two abreast (one alone at the full width)."""
-        if len(figs) == 1:
-            return self.figure(figs[0])
-        cells = ", ".join(f"[{self.figure(f, HALF_WIDTH_MM, HALF_HEIGHT_MM)}]" for f in figs)
-        return f"#grid(columns: (1fr, 1fr), column-gutter: 5mm, row-gutter: 4mm, {cells})"
+        """Figures two abreast; a wide one (several panels on a wide canvas) alone at the full
+        width, and so is one left without a partner."""
+        out: list[str] = []
+        pair: list[Figure] = []
+
+        def flush() -> None:
+            if len(pair) == 1:
+                out.append(self.figure(pair[0]))
+            elif pair:
+                cells = ", ".join(
+                    f"[{self.figure(f, HALF_WIDTH_MM, HALF_HEIGHT_MM)}]" for f in pair
+                )
+                out.append(f"#grid(columns: (1fr, 1fr), column-gutter: 5mm, {cells})")
+            pair.clear()
+
+        for f in figs:
+            if self._wide(f):
+                flush()
+                out.append(self.figure(f, TEXT_WIDTH_MM, WIDE_HEIGHT_MM))
+                continue
+            pair.append(f)
+            if len(pair) == 2:
+                flush()
+        flush()
+        return "\n".join(out)
+
+    def _wide(self, fig: Figure) -> bool:
+        path = Path(fig.path)
+        size = image_size(path if path.is_absolute() else self.root / path)
+        return size is not None and (size[0] >= WIDE_PIXELS or size[0] >= 2 * size[1])
 
     def figure(
         self, fig: Figure, max_width: float = TEXT_WIDTH_MM, max_height: float = FIGURE_HEIGHT_MM

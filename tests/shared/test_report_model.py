@@ -223,7 +223,10 @@ def test_paper_section_is_assembled_from_the_papers_parts(inputs):
     assert tuple(s.title for s in sec.subsections) == MAIN_TITLES
     summary, audit, published, claims, figures, findings = sec.subsections
     assert Paragraph("2 periods.") in summary.blocks
-    (marks,) = [b for b in summary.blocks if type(b).__name__ == "MainClaims"]
+    # the combined report has the marks and sentences at its front; its page in the summary
+    assert summary.blocks[0].text.startswith("Partial reproduction; 1 of 2 main claims [Re].")
+    page_summary = paper_section(parts, page=True).subsections[0]
+    (marks,) = [b for b in page_summary.blocks if type(b).__name__ == "MainClaims"]
     assert [m.mark for m in marks.lines] == ["not_Re", "Re"]
     assert "forms are in Appendix A.1" in audit.blocks[0].text
     assert audit.blocks[1].items == [
