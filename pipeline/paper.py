@@ -177,6 +177,7 @@ def page_step(inputs: Callable[[Context], Paths]) -> Step:
         inputs=lambda ctx: {
             **ctx.published_inputs,
             "audit": f"{ctx.results}/equation_audit.csv",
+            "math": f"{ctx.results}/equation_math.json",
             "verdicts": f"{ctx.results}/verdicts.csv",
             **inputs(ctx),
         },
@@ -214,6 +215,10 @@ class Paper:
     #: selectors and claim tests (raising ``ConfigError``); called when the workflow is parsed,
     #: so a bad published file stops it before any job. Empty: validated by the verdict step only
     load_published: str = ""
+    #: ``"module:function"``: the paper's part of the report's discussion (what was easy, what
+    #: was hard, what the paper left open), as ``function(inputs: ReportInputs) -> list of
+    #: pipeline.report.model blocks``, its numbers read from the results; empty: none
+    discussion: str = ""
 
     def __post_init__(self) -> None:
         if not SLUG_PATTERN.match(self.slug):
@@ -274,6 +279,23 @@ class Paper:
         if not name:
             raise ValueError(f"paper {self.slug}: report {self.report!r} is not 'module:function'")
         return getattr(importlib.import_module(module), name)
+
+    def discussion_function(self) -> Callable[[Any], Any]:
+        """The function ``discussion`` names (a function returning no blocks if none)."""
+        if not self.discussion:
+            return lambda inputs: []
+        module, _, name = self.discussion.partition(":")
+        if not name:
+            raise ValueError(
+                f"paper {self.slug}: discussion {self.discussion!r} is not 'module:function'"
+            )
+        return getattr(importlib.import_module(module), name)
+
+    @property
+    def report_modules(self) -> list[str]:
+        """The modules the paper's report sections are built by (its report and discussion
+        functions'), inputs of every step that renders them."""
+        return [f.split(":")[0] for f in (self.report, self.discussion) if f]
 
     def step(self, name: str) -> Step:
         for s in self.steps:

@@ -172,5 +172,6 @@ PAPER = Paper(
     settings_schema="altimeter_attitude_config",
     report="pipeline.altimeter_attitude.report:report",
     load_published="pipeline.altimeter_attitude.verdicts:load_published",
+    discussion="pipeline.altimeter_attitude.discussion:discussion",
     math_stems=MATH_STEMS,
 )

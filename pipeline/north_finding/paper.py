@@ -159,4 +159,5 @@ PAPER = Paper(
     settings_schema="north_finding_config",
     report="pipeline.north_finding.report:report",
     load_published="pipeline.north_finding.verdicts:load_published",
+    discussion="pipeline.north_finding.discussion:discussion",
 )

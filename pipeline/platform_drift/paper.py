@@ -132,4 +132,5 @@ PAPER = Paper(
     notebook_inputs=lambda ctx: [f"{ctx.results}/{SWEEP_SCENARIO}/errors.csv"],
     report="pipeline.platform_drift.report:report",
     load_published="pipeline.platform_drift.verdicts:load_published",
+    discussion="pipeline.platform_drift.discussion:discussion",
 )

@@ -23,32 +23,45 @@ from pipeline.report.model import (
     EquationTable,
     Figure,
     Link,
+    MainClaims,
     Paragraph,
     Section,
     Table,
 )
+from pipeline.report.vocabulary import (
+    MARK_WORDS,
+    TOKENS,
+    differs_word,
+    plain_words,
+    tone,
+    word,
+)
 
-__all__ = ["Anchors", "render_block", "render_section"]
-
-#: Words that get a verdict colour wherever a table cell holds exactly that word.
-_VERDICT_WORDS = {
-    "match",
-    "differs",
-    "not_checkable",
-    "reproduced",
-    "consistent",
-    "not_reproduced",
-    "upheld",
-    "not_upheld",
-    "missing",
-}
+__all__ = ["Anchors", "render_block", "render_section", "render_sections", "section_numbers"]
 
 
 def _cell(text: str) -> str:
-    word = text.strip()
-    if word in _VERDICT_WORDS:
-        return f'<span class="{H.css_class(word)}">{H.escape(text)}</span>'
-    return H.escape(text)
+    """A table cell: a verdict or status token alone is shown as its word, in its colour."""
+    token = text.strip()
+    if token in TOKENS:
+        return f'<span class="{H.css_class(token)} t-{tone(token)}">{H.escape(word(token))}</span>'
+    return H.escape(plain_words(text))
+
+
+def section_numbers(sections: list[Section], appendices: list[Section] = ()) -> dict[str, str]:
+    """Section id -> its number ("1", "2.3", "2.3.1"; appendices "A", "A.1"), in document
+    order (as in the PDF)."""
+    out: dict[str, str] = {}
+
+    def walk(items: list[Section], prefix: str, top: list[str] | None = None) -> None:
+        for i, s in enumerate(items, 1):
+            num = f"{prefix}{top[i - 1] if top else i}"
+            out[s.id] = num
+            walk(s.subsections, f"{num}.")
+
+    walk(list(sections), "")
+    walk(list(appendices), "", [chr(ord("A") + k) for k in range(len(appendices))])
+    return out
 
 
 _NUM_ATTR = ' class="num"'
@@ -94,15 +107,15 @@ def _table(t: Table, anchors: Anchors | None = None, status_rows: bool = False) 
     parts = ['<div class="scroll"><table class="data">\n']
     if t.caption:
         parts.append(f"<caption>{H.escape(t.caption)}</caption>\n")
+    notes = len(t.notes) == len(t.rows) and any(n.strip() for n in t.notes)
     if any(t.columns):
-        parts.append(
-            "<thead><tr>"
-            + "".join(f"<th>{H.escape(c)}</th>" for c in t.columns)
-            + "</tr></thead>\n"
-        )
+        head = "".join(f"<th>{_cell(c)}</th>" for c in t.columns)
+        head += "<th>note</th>" if notes else ""
+        parts.append(f"<thead><tr>{head}</tr></thead>\n")
     parts.append("<tbody>\n")
     for i, row in enumerate(t.rows):
         if status_rows and t.row_status:
+            # a row's status word; "differs" (of unknown kind) is amber, not a failure's red
             cls = f' class="{H.css_class(t.row_status[i])}"'
         else:
             cls = ' class="bad"' if i in hl else ""
@@ -111,6 +124,8 @@ def _table(t: Table, anchors: Anchors | None = None, status_rows: bool = False) 
         cells = "".join(
             f"<td{_NUM_ATTR if _NUMERIC.match(c.strip()) else ''}>{_cell(c)}</td>" for c in row
         )
+        if notes:
+            cells += f'<td class="note">{H.escape(plain_words(t.notes[i]))}</td>'
         parts.append(f"<tr{cls}>{cells}</tr>\n")
     parts.append("</tbody>\n</table></div>\n")
     return "".join(parts)
@@ -158,6 +173,16 @@ def _forms(r: EquationRow) -> str:
     return f'<dl class="forms">{items}</dl>' if items else ""
 
 
+def _status(r: EquationRow) -> str:
+    """The status of an audited equation in words, a difference with its kind."""
+    text = word(r.status) + (f": {differs_word(r.kind)}" if r.status == "differs" else "")
+    kind = f" k-{H.slugify(r.kind or 'unclassified')}" if r.status == "differs" else ""
+    return (
+        f'<span class="{H.css_class(r.status)} t-{tone(r.status, r.kind)}{kind}">'
+        f"{H.escape(text)}</span>"
+    )
+
+
 def _equation_row(group: list[EquationRow], anchors: Anchors | None = None) -> str:
     """One audited equation (or a run of form-less ones with the same status and note):
     number and status, then the note and the forms across the table's width."""
@@ -170,30 +195,51 @@ def _equation_row(group: list[EquationRow], anchors: Anchors | None = None) -> s
     )
     label = "Eqs. " if len(group) > 1 else ""
     number = equation_list([g.equation for g in group])
-    note = f'<p class="note">{H.escape(r.note)}</p>' if r.note else ""
+    note = f'<p class="note">{H.escape(plain_words(r.note))}</p>' if r.note else ""
     return (
-        f'<tr class="{H.css_class(r.status)}"{row_id}>'
+        f'<tr class="{H.css_class(r.status)} t-{tone(r.status, r.kind)}"{row_id}>'
         f'<td class="eq">{spans}{label}({H.escape(number)})</td>'
-        f'<td><span class="{H.css_class(r.status)}">{H.escape(_words(r.status))}</span></td>'
+        f"<td>{_status(r)}</td>"
         f'<td class="forms">{note}{_forms(r) if len(group) == 1 else ""}</td></tr>\n'
     )
 
 
-def _words(word: str) -> str:
-    return word.replace("_", " ")
-
-
 def _equation_table(t: EquationTable, anchors: Anchors | None = None) -> str:
+    """The differing and not checkable equations in a table; those that match in a
+    collapsed ``<details>`` below it (their forms shown when opened)."""
     head = "".join(
         f"<th>{c}</th>"
         for c in ("eq.", "status", "note; printed (the paper), derived (SymPy), residual")
     )
     cap = f"<caption>{H.escape(t.caption)}</caption>\n" if t.caption else ""
-    rows = "".join(_equation_row(g, anchors) for g in equation_groups(t.rows))
-    return (
+    shown = [r for r in t.rows if r.status != "match"]
+    matching = [r for r in t.rows if r.status == "match"]
+    rows = "".join(_equation_row(g, anchors) for g in equation_groups(shown))
+    out = (
         f'<div class="scroll"><table class="data equations">\n{cap}'
         f"<thead><tr>{head}</tr></thead>\n<tbody>\n{rows}</tbody>\n</table></div>\n"
     )
+    if matching:
+        names = equation_list([r.equation for r in matching])
+        inner = "".join(_equation_row([r], anchors) for r in matching)
+        out += (
+            f'<details class="matching"><summary>{len(matching)} printed equations match the '
+            f"derivation (eqs. {H.escape(names)}): show their forms</summary>\n"
+            f'<div class="scroll"><table class="data equations">\n'
+            f"<thead><tr>{head}</tr></thead>\n<tbody>\n{inner}</tbody>\n</table></div>\n"
+            "</details>\n"
+        )
+    return out
+
+
+def _main_claims(b: MainClaims) -> str:
+    items = "".join(
+        f'<li><span class="mark m-{H.slugify(m.mark)}">{H.escape(MARK_WORDS.get(m.mark, m.mark))}'
+        f'</span> {H.escape(m.text)} <span class="where">({H.escape(m.label)})</span>'
+        f'<br><span class="basis">{H.escape(plain_words(m.basis))}</span></li>\n'
+        for m in b.lines
+    )
+    return f'<ul class="marks">\n{items}</ul>\n'
 
 
 def _figure(f: Figure) -> str:
@@ -211,10 +257,12 @@ def _figure(f: Figure) -> str:
 def render_block(b: Block, anchors: Anchors | None = None, status_rows: bool = False) -> str:
     """One block as HTML (see :func:`render_section`)."""
     if isinstance(b, Paragraph):
-        return H.paragraph(b.text)
+        return H.paragraph(plain_words(b.text))
     if isinstance(b, Bullets):
-        items = "".join(f"<li>{H.escape(i)}</li>\n" for i in b.items)
+        items = "".join(f"<li>{H.escape(plain_words(i))}</li>\n" for i in b.items)
         return f"<ul>\n{items}</ul>\n"
+    if isinstance(b, MainClaims):
+        return _main_claims(b)
     if isinstance(b, Table):
         return _table(b, anchors, status_rows)
     if isinstance(b, Figure):
@@ -250,3 +298,18 @@ def render_section(
         f'<h{h}><a href="#{H.escape(s.id)}">{secno}'
         f"{H.escape(s.title)}</a></h{h}>\n{body}</section>\n"
     )
+
+
+def render_sections(
+    sections: list[Section],
+    appendices: list[Section],
+    numbers: dict[str, str],
+    anchors: Anchors | None = None,
+    status_rows: bool = False,
+) -> str:
+    """The numbered sections, then the appendices under a heading of their own."""
+    body = "".join(render_section(s, numbers, 2, anchors, status_rows) for s in sections)
+    if appendices:
+        body += '<h2 class="appendices" id="appendices">Appendices</h2>\n'
+        body += "".join(render_section(s, numbers, 2, anchors, status_rows) for s in appendices)
+    return body

@@ -37,13 +37,17 @@ __all__ = [
 
 #: Inline stylesheet. Row classes ``v-<word>`` colour verdict/status words used by
 #: every paper of the project (reproduced, consistent, upheld, match are good;
-#: not_reproduced, not_upheld, differs are bad; not_checkable is neutral).
+#: not_reproduced, not_upheld are bad; not_checkable is neutral), ``t-<tone>`` the tone of
+#: pipeline.report.vocabulary (a printed equation that differs is bad only as an error of the
+#: paper, amber otherwise).
 DEFAULT_CSS = """
 body { font-family: system-ui, -apple-system, "Segoe UI", Roboto, "DejaVu Sans", sans-serif;
        max-width: 1200px; margin: 0 auto; padding: 1em 2em; line-height: 1.45; color: #1b1b1b; }
 h1 { font-size: 1.7em; margin-bottom: 0.2em; }
 h2 { border-bottom: 2px solid #ccc; padding-bottom: 0.15em; margin-top: 2em; }
 h3 { margin-top: 1.5em; }
+h2 a, h3 a, h4 a, h5 a { color: inherit; text-decoration: none; }
+span.secno { color: #666; margin-right: 0.4em; font-variant-numeric: tabular-nums; }
 section { margin-bottom: 1em; }
 nav.toc ul { columns: 2; }
 table.data { border-collapse: collapse; margin: 0.5em 0 1em 0; font-size: 0.9em; }
@@ -53,14 +57,26 @@ table.data th, table.data td { border: 1px solid #bbb; padding: 0.25em 0.55em;
 table.data th { background: #eef0f3; text-align: left; }
 table.data td.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 tr.v-reproduced td, tr.v-consistent td, tr.v-upheld td, tr.v-match td { background: #eaf6ea; }
-tr.v-not_reproduced td, tr.v-not_upheld td, tr.v-differs td { background: #fbe3e1; }
+tr.v-not_reproduced td, tr.v-not_upheld td, tr.t-bad td { background: #fbe3e1; }
 tr.v-not_checkable td { background: #f1f1f1; color: #555; }
-tr.v-missing td { background: #fff4d6; }
+tr.v-missing td, tr.t-partial td, tr.v-differs td { background: #fff4d6; }
 span.v-reproduced, span.v-consistent, span.v-upheld, span.v-match {
   color: #1d6b1d; font-weight: bold; }
-span.v-not_reproduced, span.v-not_upheld, span.v-differs { color: #a3261a; font-weight: bold; }
+span.v-not_reproduced, span.v-not_upheld, span.t-bad { color: #a3261a; font-weight: bold; }
 span.v-not_checkable { color: #555; font-weight: bold; }
-span.v-missing { color: #8a6100; font-weight: bold; }
+span.v-missing, span.t-partial, span.v-differs { color: #8a5a00; font-weight: bold; }
+tr.v-differs.t-bad td { background: #fbe3e1; }
+span.v-differs.t-bad { color: #a3261a; }
+ul.marks { list-style: none; padding-left: 0.2em; }
+ul.marks li { margin: 0.35em 0; }
+span.mark { display: inline-block; min-width: 3.4em; font-weight: bold; }
+span.mark.m-re { color: #1d6b1d; }
+span.mark.m-not-re { color: #a3261a; }
+span.mark.m-not-checkable { color: #555; min-width: 7.5em; }
+ul.marks span.where { color: #555; }
+ul.marks span.basis { color: #444; font-size: 0.9em; margin-left: 3.6em; display: inline-block; }
+details.matching { margin: 0.4em 0 1.2em 0; }
+details.matching summary { cursor: pointer; color: #1f4e99; }
 figure { margin: 1em 0 2em 0; }
 figure img { max-width: 100%; height: auto; border: 1px solid #ddd; }
 figcaption { font-size: 0.9em; color: #333; max-width: 60em; }

@@ -6,10 +6,10 @@ fields of :class:`EquationRow`, which hold complete ``<math>`` elements (or ``No
 paper contributes its sections through its :class:`~pipeline.paper.Paper` plug-in: a
 function of :class:`ReportInputs` that returns a :class:`PaperReport`.
 
->>> t = frame_table(pd.DataFrame({"id": ["a"], "x": [0.1 + 0.2], "verdict": ["differs"]}),
+>>> t = frame_table(pd.DataFrame({"id": ["a"], "x": [0.1 + 0.2], "verdict": ["not_upheld"]}),
 ...                 status="verdict")
 >>> t.rows, t.highlight, t.row_status
-([['a', '0.3', 'differs']], [0], ['differs'])
+([['a', '0.3', 'not_upheld']], [0], ['not_upheld'])
 >>> frame_table(pd.DataFrame({"x": []}), caption="sweep.csv")
 Paragraph(text='sweep.csv: no rows.')
 """
@@ -35,7 +35,10 @@ __all__ = [
     "EquationTable",
     "Figure",
     "Link",
+    "MainClaimLine",
+    "MainClaims",
     "PaperReport",
+    "PaperSummary",
     "Paragraph",
     "ReportInputs",
     "ScoreRow",
@@ -46,8 +49,10 @@ __all__ = [
     "walk",
 ]
 
-#: Verdict/status words that mark a table row as a failure (``Table.highlight``).
-FAILURE_WORDS = ("not_reproduced", "not_upheld", "differs", "missing")
+#: Verdict/status words that mark a table row as a failure (``Table.highlight``). A printed
+#: equation that differs is not one by itself: only an error of the paper is (its kind, which
+#: the equation audit renders; pipeline.report.vocabulary.tone)
+FAILURE_WORDS = ("not_reproduced", "not_upheld", "missing")
 #: verdicts.csv columns after the contract's (pipeline.columns.VERDICT_COLUMNS) that the
 #: reports show where a file has them, selected by name
 VERDICT_EXTRA_COLUMNS = ("tolerance", "reason")
@@ -71,13 +76,16 @@ class Bullets:
 class Table:
     """A table of plain-text cells. ``highlight`` lists the row indices to emphasise (rows
     whose verdict or status is a failure); ``row_status`` (empty, or one word per row) is the
-    verdict or status word of each row, which a page colours its row by."""
+    verdict or status word of each row, which a page colours its row by; ``notes`` (empty, or
+    one text per row) the detail of each row that the HTML shows in a last column and the
+    PDF leaves to it (the PDF's main part has a page budget)."""
 
     columns: list[str]
     rows: list[list[str]]
     caption: str = ""
     highlight: list[int] = field(default_factory=list)
     row_status: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
 
 
 @dataclass(frozen=True)
@@ -108,6 +116,9 @@ class EquationRow:
     printed_srepr: str | None
     derived_srepr: str | None
     residual_srepr: str | None
+    #: a differing row's kind (pipeline.columns.DIFFERS_KINDS: paper_error, text_artefact,
+    #: convention); blank: not classified (or the row does not differ)
+    kind: str = ""
 
 
 @dataclass(frozen=True)
@@ -122,13 +133,45 @@ class EquationTable:
 
 @dataclass(frozen=True)
 class Link:
-    """A link; ``target`` is an href relative to the report (e.g. ``notebooks/x.html``)."""
+    """A link; ``target`` is an href relative to the report (e.g. ``notebooks/x.html``) or an
+    anchor (``#id``); ``path``: where the target is in the repository
+    (``reports/notebooks/x.html``), which a PDF that travels alone names instead of linking."""
 
     text: str
     target: str
+    path: str = ""
 
 
-Block = Paragraph | Bullets | Table | Figure | EquationTable | Link
+@dataclass(frozen=True)
+class MainClaimLine:
+    """One main claim of a paper: its ``mark`` (pipeline.verdicts.main_claims.MARKS: Re,
+    not_Re, not_checkable), where the paper states it, the claim as a sentence, and the basis
+    of the mark in the paper's labels."""
+
+    mark: str
+    label: str
+    text: str
+    basis: str
+
+
+@dataclass(frozen=True)
+class MainClaims:
+    """A paper's main claims with their marks (a [Re]/[¬Re] line each)."""
+
+    lines: list[MainClaimLine]
+
+
+Block = Paragraph | Bullets | Table | Figure | EquationTable | Link | MainClaims
+
+
+@dataclass(frozen=True)
+class PaperSummary:
+    """A paper on the first page: ``status`` (Full / Partial / Not reproduced), three plain
+    sentences (what was reproduced, what was not, the cause) and its main claims."""
+
+    status: str
+    sentences: tuple[str, str, str]
+    main_claims: tuple[MainClaimLine, ...]
 
 
 @dataclass(frozen=True)
@@ -145,7 +188,9 @@ class ScoreRow:
 
     ``audit``: match / differs / not_checkable; ``numbers``: reproduced /
     consistent / not_reproduced; ``claims``: upheld / not_upheld / not_checkable;
-    ``line``: the ReScience-style one-line verdict; ``anchor``: the section id.
+    ``line``: the ReScience-style one-line verdict; ``anchor``: the section id;
+    ``summary``: the paper on the first page; ``differs``: the differing equations by kind
+    (paper_error, text_artefact, convention, and "" for unclassified).
     """
 
     slug: str
@@ -155,15 +200,23 @@ class ScoreRow:
     claims: dict[str, int]
     line: str
     anchor: str
+    summary: PaperSummary | None = None
+    differs: dict[str, int] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
 class Document:
+    """A reproduction article: title page (``abstract``, then each paper's summary from its
+    ``scoreboard`` row), the numbered ``sections`` (introduction, papers, discussion,
+    references) and the ``appendices`` (numbered A, B, ...)."""
+
     title: str
     subtitle: str
     generated_from: str
     scoreboard: list[ScoreRow]
     sections: list[Section]
+    appendices: list[Section] = field(default_factory=list)
+    abstract: str = ""
 
 
 @dataclass(frozen=True)

@@ -1,43 +1,55 @@
-"""One paper's section of the combined report, assembled from the sections the paper's
-report contributes (:class:`~pipeline.report.model.PaperReport`): summary, equation audit,
-published vs reproduced, figures, assumptions, findings beyond the paper, notebook.
+"""One template for a paper, in the combined report and on its own page: the same sections in
+the same order, built from its :class:`~pipeline.report.paper_parts.PaperParts`.
 
-The page sections are reused as they are, their ids prefixed with the paper's slug; a
-subsection holding one table becomes that table, and nesting deeper than two levels is
+Main text: Summary (the main claims with their marks, the three sentences, the paper's own
+summary), Equation audit (a statement per differing equation), Published numbers, Claims,
+Figures (the paper's, in its numbering), Findings beyond the paper (with the figures the
+paper lacks). Discussion: the paper's part of it. Appendices: the equation forms, the
+assumptions, and on the page the paper's further sections.
+
+The paper's page sections are reused as they are, their ids prefixed with the paper's slug
+(its own page drops the prefix again);
+a subsection holding one table becomes that table, and nesting deeper than two levels is
 merged into its parent (the PDF's heading depth stays at three).
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 
+from pipeline.report.equations import equation_appendix, equation_section
 from pipeline.report.model import (
     Block,
     Figure,
     Link,
-    PaperReport,
+    MainClaims,
     Paragraph,
-    ScoreRow,
     Section,
     Table,
 )
-from pipeline.report.scoreboard import plural
+from pipeline.report.paper_parts import PaperParts
+from pipeline.report.summary import plural
 
-__all__ = ["PaperParts", "paper_section", "prefixed"]
+__all__ = [
+    "MAIN_TITLES",
+    "assumptions_section",
+    "discussion_section",
+    "forms_section",
+    "further_sections",
+    "paper_section",
+    "supporting_section",
+    "prefixed",
+]
 
-
-@dataclass(frozen=True)
-class PaperParts:
-    """What a paper's section is built from (all read or computed from its results)."""
-
-    slug: str
-    title: str
-    citation: str
-    score: ScoreRow
-    report: PaperReport
-    equations: Section
-    published: Section | None  # None: the report's own published sections are used
+#: the main-text sections of every paper, in order
+MAIN_TITLES = (
+    "Summary",
+    "Equation audit",
+    "Published numbers",
+    "Claims",
+    "Figures",
+    "Findings beyond the paper",
+)
 
 
 def prefixed(section: Section, prefix: str) -> Section:
@@ -92,19 +104,25 @@ def _flatten_deep(section: Section, depth: int, max_depth: int = 2) -> Section:
     return Section(section.id, section.title, blocks, [])
 
 
-def _part(p: PaperParts, key: str) -> tuple[list[Block], list[Section]]:
+def _used(p: PaperParts) -> set[str]:
+    return {sid for ids in p.report.parts.values() for sid in (ids or [])}
+
+
+def _part(p: PaperParts, key: str, first: bool = False) -> tuple[list[Block], list[Section]]:
     """Blocks and subsections of the page sections the paper lists for ``key``: the first
-    section's blocks and subsections, the others as subsections."""
+    section's blocks and subsections, the others as subsections (``first``: the first only)."""
     blocks: list[Block] = []
     subs: list[Section] = []
-    for i, sid in enumerate(p.report.parts.get(key) or []):
+    ids = list(p.report.parts.get(key) or [])
+    for i, sid in enumerate(ids[:1] if first else ids):
         sec = p.report.section(sid)
         if sec is None:
             raise ValueError(
                 f"paper {p.slug}: report part {key!r} names section {sid!r}, which its report "
                 f"does not have (sections: {[s.id for s in p.report.sections]})"
             )
-        sec = _flatten_deep(_inline_single_tables(prefixed(sec, p.slug)), depth=1)
+        # the first section's subsections are the part's; the others' one level deeper
+        sec = _flatten_deep(_inline_single_tables(prefixed(sec, p.slug)), depth=1 if i == 0 else 2)
         if i == 0:
             blocks += sec.blocks
             subs += sec.subsections
@@ -124,27 +142,49 @@ def _extra(block: Block) -> bool:
     return isinstance(block, Figure) and not block.in_paper
 
 
-def paper_section(p: PaperParts) -> Section:
-    """The paper's section: its reference, then the parts in the documented order."""
-    blocks, subs = _part(p, "summary")
-    summary = Section(
-        f"{p.slug}-summary",
-        "Summary",
-        [
-            Paragraph(p.score.line),
-            *blocks,
-            Link(f"The per-paper page with every detail: {p.slug}.html", f"{p.slug}.html"),
-        ],
-        subs,
+def _links(p: PaperParts, page: bool) -> list[Block]:
+    out: list[Block] = []
+    if not page:
+        out.append(
+            Link(
+                "The paper's page, with every table of its results", p.page, f"{p.reports}/{p.page}"
+            )
+        )
+    out.append(
+        Link(
+            "The executed notebook, stepping through the SymPy derivations",
+            p.notebook,
+            f"{p.reports}/{p.notebook}",
+        )
     )
-    if p.published is not None:
-        published = p.published
-    else:
-        blocks, subs = _part(p, "published")
-        subs = [s if s.title else Section(s.id, "Claims", s.blocks, s.subsections) for s in subs]
-        published = Section(f"{p.slug}-published", "Published vs reproduced", blocks, subs)
-    # the paper's figures; figures not in the paper (and subsections holding only such
-    # figures) go to the findings
+    return out
+
+
+def _summary(p: PaperParts, page: bool) -> Section:
+    """The paper's status, its main claims and three sentences (on its page; the combined
+    report has them on its first page and points there), then the paper's own summary."""
+    s = p.score.summary
+    blocks: list[Block] = []
+    if s is not None and page:
+        blocks.append(Paragraph(f"{s.status}."))
+        if s.main_claims:
+            blocks.append(MainClaims(list(s.main_claims)))
+        blocks += [Paragraph(t) for t in s.sentences]
+    elif s is not None:
+        marks = [m.mark for m in s.main_claims]
+        held = f"; {marks.count('Re')} of {len(marks)} main claims [Re]" if marks else ""
+        blocks.append(
+            Paragraph(
+                f"{s.status}{held}. The main claims with their marks and what was and was not "
+                "reproduced are in the papers in brief, at the front of this report."
+            )
+        )
+    own, subs = _part(p, "summary")
+    return Section(f"{p.slug}-summary", "Summary", blocks + own + _links(p, page), subs)
+
+
+def _figures_section(p: PaperParts) -> tuple[Section, list[Block], list[Section]]:
+    """The paper's figures; those it lacks (and subsections holding only such) go apart."""
     blocks, subs = _part(p, "figures")
     extra = [b for b in blocks if _extra(b)]
     keep = [b for b in blocks if not _extra(b)]
@@ -160,7 +200,51 @@ def paper_section(p: PaperParts) -> Section:
         "are under Findings beyond the paper."
     )
     non_fig = [b for b in keep if not isinstance(b, Figure)]
-    figures = Section(f"{p.slug}-figures", "Figures", [intro, *non_fig, *figs], keep_subs)
+    section = Section(f"{p.slug}-figures", "Figures", [intro, *non_fig, *figs], keep_subs)
+    return section, extra, extra_subs
+
+
+def paper_section(p: PaperParts, appendix: str = "", page: bool = False) -> Section:
+    """The paper's main-text section: its reference, then :data:`MAIN_TITLES` in order
+    (``appendix``: where its equation forms are; ``page``: on the paper's own page)."""
+    figures, extra, extra_subs = _figures_section(p)
+    blocks, subs = _part(p, "findings", first=True)
+    findings = Section(
+        f"{p.slug}-findings", "Findings beyond the paper", [*blocks, *extra], subs + extra_subs
+    )
+    if not findings.blocks and not findings.subsections:
+        findings = Section(findings.id, findings.title, [Paragraph("None beyond the paper's.")])
+    intro: Sequence[Block] = (
+        [Paragraph(f"Reproduced paper: {p.citation}.".replace("..", "."))] if p.citation else []
+    )
+    return Section(
+        p.slug,
+        p.title,
+        list(intro),
+        [
+            _summary(p, page),
+            equation_section(p.slug, p.equations, p.score.audit, appendix),
+            p.published,
+            p.claims,
+            figures,
+            findings,
+        ],
+    )
+
+
+def discussion_section(p: PaperParts, sid: str | None = None, title: str | None = None) -> Section:
+    """The paper's part of the discussion (its ``Paper.discussion`` blocks)."""
+    blocks = p.discussion or [Paragraph("The paper package contributes no discussion.")]
+    return Section(sid or f"{p.slug}-discussion", title or p.title, list(blocks))
+
+
+def forms_section(p: PaperParts, title: str | None = None) -> Section:
+    """The appendix of the paper's equation audit (the forms)."""
+    return equation_appendix(p.slug, title or p.title, p.equations, p.stems)
+
+
+def assumptions_section(p: PaperParts, title: str | None = None) -> Section:
+    """The decisions the scenario files take where the paper is silent."""
     blocks, subs = _part(p, "assumptions")
     if not any(isinstance(b, Paragraph) for b in blocks):
         blocks.insert(
@@ -170,30 +254,33 @@ def paper_section(p: PaperParts) -> Section:
                 "from the file at the named field."
             ),
         )
-    assumptions = Section(f"{p.slug}-assumptions", "Assumptions", blocks, subs)
-    blocks, subs = _part(p, "findings")
-    findings = Section(
-        f"{p.slug}-findings", "Findings beyond the paper", [*blocks, *extra], subs + extra_subs
-    )
-    notebook = Section(
-        f"{p.slug}-notebook",
-        "Notebook",
-        [
-            Paragraph(
-                "The notebook steps through the SymPy derivations of this paper and the "
-                "equation audit; the workflow executed it and exported it to HTML beside this "
-                "report."
-            ),
-            Link(f"Executed notebook: notebooks/{p.slug}.html", f"notebooks/{p.slug}.html"),
-        ],
-    )
-    # the heading is the paper's title: the intro gives only the reference
-    intro_blocks: Sequence[Block] = (
-        [Paragraph(f"Reproduced paper: {p.citation}.".replace("..", "."))] if p.citation else []
-    )
-    return Section(
-        p.slug,
-        p.title,
-        list(intro_blocks),
-        [summary, p.equations, published, figures, assumptions, findings, notebook],
-    )
+    return Section(f"{p.slug}-assumptions", title or p.title, blocks, subs)
+
+
+def supporting_section(
+    p: PaperParts, title: str | None = None, flatten: bool = True
+) -> Section | None:
+    """The sections the paper lists for its findings after the first: the results that
+    support them (an appendix; each keeps its id and title; ``flatten``: their subsections
+    merged into them, as the PDF's heading depth needs), None if there are none."""
+    ids = list(p.report.parts.get("findings") or [])[1:]
+    if not ids:
+        return None
+    subs = []
+    for sid in ids:
+        sec = p.report.section(sid)
+        if sec is None:
+            raise ValueError(
+                f"paper {p.slug}: report part 'findings' names section {sid!r}, which its "
+                f"report does not have (sections: {[s.id for s in p.report.sections]})"
+            )
+        sec = prefixed(sec, p.slug)
+        subs.append(_flatten_deep(_inline_single_tables(sec), depth=2) if flatten else sec)
+    return Section(f"{p.slug}-supporting", title or p.title, [], subs)
+
+
+def further_sections(p: PaperParts) -> list[Section]:
+    """The paper's page sections that feed no part of the template, and its own published
+    tables (with every note of theirs): the page's last appendix."""
+    used = _used(p) - set(p.report.parts.get("published") or [])
+    return [prefixed(s, p.slug) for s in p.report.sections if s.id not in used]

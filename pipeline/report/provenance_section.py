@@ -1,17 +1,16 @@
 """The provenance section of the combined report: the code version, the scenario
-configurations and seeds, the package versions and the wall time of every workflow job, read
-from each paper's ``results/<slug>/<scenario>/provenance.json`` and ``benchmarks/*.tsv``."""
+configurations and seeds and the package versions, read from each paper's
+``results/<slug>/<scenario>/provenance.json`` (the wall times stay in ``benchmarks/*.tsv``:
+a report that copied them would differ from run to run)."""
 
 from __future__ import annotations
 
 import json
-import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import pandas as pd
 import yaml
 
 from pipeline.provenance import git_describe
@@ -68,8 +67,8 @@ def _scenario_dirs(rdir: Path) -> list[Path]:
 
 
 def provenance_section(papers: Sequence[ProvenanceInputs], root: Path) -> Section:
-    """Code version, scenario configs and seeds, package versions and wall times of every
-    paper's runs (``results/<slug>/<scenario>/provenance.json``, ``benchmarks/*.tsv``)."""
+    """Code version, scenario configs and seeds and package versions of every paper's runs
+    (``results/<slug>/<scenario>/provenance.json``)."""
     runs: list[list[str]] = []
     hl: list[int] = []
     pkgs: dict[str, dict[str, list[str]]] = {}
@@ -166,41 +165,15 @@ def provenance_section(papers: Sequence[ProvenanceInputs], root: Path) -> Sectio
             )
         ],
     )
-    bench_rows: list[list[str]] = []
-    totals: list[str] = []
-    for p in papers:
-        bdir = p.results / "benchmarks"
-        files = sorted(bdir.glob("*.tsv")) if bdir.is_dir() else []
-        total = 0.0
-        for f in files:
-            df = pd.read_csv(f, sep="\t")
-            if "s" not in df.columns or df.empty:
-                raise ValueError(f"{f}: not a Snakemake benchmark file (no 's' column or no row)")
-            s = float(pd.to_numeric(df["s"], errors="coerce").mean())
-            rss = (
-                float(pd.to_numeric(df["max_rss"], errors="coerce").max())
-                if "max_rss" in df.columns
-                else float("nan")
-            )
-            total += s
-            bench_rows.append([p.slug, f.stem, f"{s:.2f}", "" if math.isnan(rss) else f"{rss:.0f}"])
-        if files:
-            totals.append(f"{p.slug} {total:.1f} s")
     wall = Section(
         "provenance-wall-time",
-        "Wall time per workflow step",
+        "Wall time",
         [
             Paragraph(
-                "Wall time of each workflow job, from the Snakemake benchmark files "
-                "(results/<paper>/benchmarks/<job>.tsv, column s). Sum per paper: "
-                + (", ".join(totals) if totals else "no benchmark files")
-                + " (jobs of different papers may have run in parallel)."
-            ),
-            Table(
-                columns=["paper", "job", "wall time (s)", "max RSS (MB)"],
-                rows=bench_rows,
-                caption="Wall time per workflow step",
-            ),
+                "The wall time of every workflow job is in the Snakemake benchmark files "
+                "results/<paper>/benchmarks/<job>.tsv; it is not copied here, so that this "
+                "report is the same byte for byte whenever the results are."
+            )
         ],
     )
     return Section(

@@ -5,24 +5,24 @@ CSS, figures as base64 ``data:`` URIs, mathematics as inline MathML (rendered na
 the browser), no JavaScript and nothing fetched from a network. The output is
 deterministic: the same document gives the same bytes.
 
-Layout: title, the scoreboard (one row per paper plus its ReScience-style line, linking to
-the paper's section), a numbered table of contents, then the numbered sections (the PDF
-uses the same numbers).
+Layout: title, abstract, the papers in brief (per paper its status, its main claims marked
+[Re] or [¬Re] and three sentences), the counts per paper, a numbered table of contents, then
+the numbered sections and the appendices A, B, ... (the PDF uses the same numbers).
 """
 
 from __future__ import annotations
 
 import os
-import re
 from collections.abc import Sequence
 from pathlib import Path
 
 from pipeline.atomic import write_text
 from pipeline.report import html as H
-from pipeline.report.blocks_html import Anchors, render_section
-from pipeline.report.model import Document, ScoreRow, Section
+from pipeline.report.blocks_html import Anchors, render_block, render_sections, section_numbers
+from pipeline.report.model import Document, MainClaims, Paragraph, ScoreRow, Section
+from pipeline.report.vocabulary import tone, word
 
-__all__ = ["CSS", "render_html", "section_numbers", "write_html"]
+__all__ = ["CSS", "paper_summaries", "render_html", "section_numbers", "write_html"]
 
 CSS = (
     H.DEFAULT_CSS
@@ -31,8 +31,6 @@ body { max-width: 1400px; }
 header.title h1 { font-size: 2em; margin-bottom: 0.1em; }
 header.title p.subtitle { font-size: 1.1em; color: #333; margin-top: 0; }
 header.title p.generated { color: #666; font-size: 0.9em; }
-h2 a, h3 a, h4 a, h5 a { color: inherit; text-decoration: none; }
-span.secno { color: #666; margin-right: 0.4em; font-variant-numeric: tabular-nums; }
 table.scoreboard { border-collapse: collapse; width: 100%; margin: 0.6em 0 1.4em 0;
                    font-size: 0.95em; }
 table.scoreboard caption { text-align: left; font-weight: bold; font-size: 1.15em;
@@ -54,14 +52,16 @@ table.scoreboard td.bad { background: #fbe3e1; color: #a3261a; }
 table.scoreboard td.neutral { background: #f3f3f3; color: #444; }
 table.scoreboard td.n.zero { background: #fff; }
 table.scoreboard .first { border-left: 2px solid #666; }
-table.scoreboard tr.line td { font-size: 0.9em; color: #222; background: #fafafa;
-                              border-bottom: 2px solid #666; }
-table.scoreboard tr.line td strong.full { color: #1d6b1d; }
-table.scoreboard tr.line td strong.partial { color: #8a5a00; }
-table.scoreboard tr.line td strong.none { color: #a3261a; }
-table.scoreboard ul.reasons { margin: 0.15em 0 0.1em 0; padding-left: 1.3em; }
-table.scoreboard ul.reasons li { margin: 0.05em 0; }
-table.scoreboard a.ref { font-family: ui-monospace, monospace; font-size: 0.92em; }
+table.scoreboard td.partial { background: #fff4d6; color: #8a5a00; }
+table.scoreboard span.kinds { display: block; font-size: 0.6em; font-weight: normal; }
+strong.status.full { color: #1d6b1d; }
+strong.status.partial { color: #8a5a00; }
+strong.status.none { color: #a3261a; }
+strong.status { font-size: 0.85em; margin-left: 0.5em; }
+span.sref { font-size: 0.75em; color: #666; font-weight: normal; margin-left: 0.5em; }
+section.summaries h3 { margin-bottom: 0.2em; }
+div.paper-summary { border-left: 3px solid #ccd; padding-left: 0.9em; margin: 0.8em 0 1.4em 0; }
+h2.appendices { border-bottom: 3px double #999; }
 tr:target > td { background: #fff4c2; }
 p.legend { font-size: 0.85em; color: #444; }
 nav.toc { background: #f7f8fa; border: 1px solid #ddd; padding: 0.4em 1em; margin: 1em 0; }
@@ -82,7 +82,8 @@ table.equations dl.forms dd { margin: 0; min-width: 0; }
 table.equations div.m { max-height: 24em; overflow: auto; padding: 0.15em 0; }
 table.equations p.note { margin: 0.2em 0; font-size: 0.9em; color: #333; }
 table.equations tr.v-match td { background: #fff; }
-table.equations tr.v-differs td { background: #fdf0ee; }
+table.equations tr.v-differs td { background: #fff8e6; }
+table.equations tr.v-differs.t-bad td { background: #fdf0ee; }
 table.equations tr.v-not_checkable td { background: #f7f7f7; }
 math { font-size: 1.05em; font-family: "STIX Two Math", "Cambria Math", "Latin Modern Math",
                                        "DejaVu Math TeX Gyre", math; }
@@ -95,23 +96,6 @@ p.link a { font-weight: bold; }
 )
 
 
-# --------------------------------------------------------------------------- numbering
-
-
-def section_numbers(sections: Sequence[Section]) -> dict[str, str]:
-    """Section id -> its number ("1", "2.3", "2.3.1"), in document order (as in the PDF)."""
-    out: dict[str, str] = {}
-
-    def walk(items: Sequence[Section], prefix: str) -> None:
-        for i, s in enumerate(items, 1):
-            num = f"{prefix}{i}"
-            out[s.id] = num
-            walk(s.subsections, f"{num}.")
-
-    walk(sections, "")
-    return out
-
-
 # --------------------------------------------------------------------------- front matter
 
 _GROUPS = (
@@ -119,49 +103,44 @@ _GROUPS = (
     ("Published numbers", "numbers", ("reproduced", "consistent", "not_reproduced")),
     ("Claims", "claims", ("upheld", "not_upheld", "not_checkable")),
 )
-_TONE = {
-    "match": "good",
-    "reproduced": "good",
-    "consistent": "good",
-    "upheld": "good",
-    "differs": "bad",
-    "not_reproduced": "bad",
-    "not_upheld": "bad",
-    "not_checkable": "neutral",
-}
-_SHORT = {"not_checkable": "not checkable", "not_reproduced": "not reproduced"}
+_STATUS_TONE = {"full": "full", "not": "none"}
 
 
-_TOKEN = re.compile(r"[A-Za-z0-9_./]+")  # ids, with a "/variant" suffix
+def _status_class(status: str) -> str:
+    return _STATUS_TONE.get(status.lower().split(" ")[0], "partial")
 
 
-def _linked(text: str, targets: dict[str, str]) -> str:
-    """``text`` escaped, each whole word that is a key of ``targets`` linked to its anchor."""
-    out, pos = [], 0
-    for m in _TOKEN.finditer(text):
-        word = m.group(0).rstrip(".")
-        anchor = targets.get(word)
-        if anchor is None:
+def paper_summaries(rows: Sequence[ScoreRow], numbers: dict[str, str]) -> str:
+    """The first page's part per paper: its title and status, its main claims with their
+    marks, and its three sentences."""
+    out = ['<section class="summaries" id="summaries">\n<h2>The papers in brief</h2>\n']
+    for r in rows:
+        s = r.summary
+        if s is None:
             continue
-        out.append(H.escape(text[pos : m.start()]))
-        out.append(f'<a class="ref" href="#{H.escape(anchor)}">{H.escape(word)}</a>')
-        pos = m.start() + len(word)
-    out.append(H.escape(text[pos:]))
+        out.append(
+            f'<div class="paper-summary" id="summary-{H.escape(r.slug)}">\n'
+            f'<h3><a href="#{H.escape(r.anchor)}">{H.escape(r.title)}</a> '
+            f'<strong class="status {_status_class(s.status)}">{H.escape(s.status)}</strong> '
+            f'<span class="sref">section {H.escape(numbers.get(r.anchor, ""))}</span></h3>\n'
+        )
+        if s.main_claims:
+            out.append(render_block(MainClaims(list(s.main_claims))))
+        out += [render_block(Paragraph(t)) for t in s.sentences]
+        out.append("</div>\n")
+    out.append("</section>\n")
     return "".join(out)
 
 
-def _scoreboard(
-    rows: Sequence[ScoreRow],
-    numbers: dict[str, str] | None = None,
-    anchors: Anchors | None = None,
-) -> str:
-    n_cols = 1 + sum(len(w) for _, _, w in _GROUPS)
+def _scoreboard(rows: Sequence[ScoreRow], numbers: dict[str, str] | None = None) -> str:
+    """The counts per paper (every count from the CSVs; a difference is red only as an error
+    of the paper)."""
     groups = "".join(
         f'<th colspan="{len(words)}" class="first">{H.escape(name)}</th>'
         for name, _, words in _GROUPS
     )
     words = "".join(
-        f'<th class="{"first" if i == 0 else ""}">{H.escape(_SHORT.get(w, w.replace("_", " ")))}</th>'
+        f'<th class="{"first" if i == 0 else ""}">{H.escape(word(w))}</th>'
         for _, _, ws in _GROUPS
         for i, w in enumerate(ws)
     )
@@ -172,59 +151,39 @@ def _scoreboard(
             counts = getattr(r, attr)
             for i, w in enumerate(ws):
                 n = int(counts.get(w, 0))
-                cls = ["n", _TONE.get(w, "neutral")]
-                if n == 0:
-                    cls.append("zero")
-                if i == 0:
-                    cls.append("first")
+                t = tone(w, "paper_error" if r.differs.get("paper_error") else "")
+                cls = ["n", t] + (["zero"] if n == 0 else []) + (["first"] if i == 0 else [])
+                extra = ""
+                if w == "differs" and n:
+                    errors = int(r.differs.get("paper_error", 0))
+                    words = f"{errors} {'error' if errors == 1 else 'errors'} of the paper"
+                    if not any(k and m for k, m in r.differs.items()):
+                        words = "not classified"
+                    extra = f'<span class="kinds">{words}</span>'
                 cells.append(
-                    f'<td class="{" ".join(cls)}" data-group="{attr}" data-word="{w}">{n}</td>'
+                    f'<td class="{" ".join(cls)}" data-group="{attr}" data-word="{w}">{n}{extra}</td>'
                 )
-        extra = [
-            f"{w}: {n}"
-            for _, attr, ws in _GROUPS
-            for w, n in getattr(r, attr).items()
-            if w not in ws
-        ]
-        totals = " · ".join(
-            f"{sum(getattr(r, attr).values())} {noun}"
-            for attr, noun in (("audit", "equations"), ("numbers", "numbers"), ("claims", "claims"))
-        )
         body.append(
             f'<tr class="counts" id="score-{H.escape(r.slug)}">'
             f'<td class="paper"><a href="#{H.escape(r.anchor)}">{H.escape(r.title)}</a>'
-            f'<span class="slug">{H.escape(r.slug)}: {totals}</span></td>{"".join(cells)}</tr>\n'
-        )
-        status, _, rest = r.line.partition(":")
-        tone = (
-            "full"
-            if status.lower().startswith("full")
-            else "none"
-            if status.lower().startswith("not")
-            else "partial"
-        )
-        warn = f" (unexpected words: {H.escape(', '.join(extra))})" if extra else ""
-        # one reason per line: the line's sentences end with ". " (ids have no spaces)
-        reasons = [x.strip() for x in re.split(r"(?<=\.)\s+", rest.strip()) if x.strip()]
-        targets = anchors.rows.get(r.slug, {}) if anchors is not None else {}
-        items = "".join(f"<li>{_linked(x, targets)}</li>" for x in reasons)
-        body.append(
-            f'<tr class="line"><td colspan="{n_cols}"><strong class="{tone}">'
-            f"{H.escape(status)}</strong>{warn} "
-            f'<a href="#{H.escape(r.anchor)}">see section '
-            f"{H.escape((numbers or {}).get(r.anchor, r.anchor))}</a>"
-            f'<ul class="reasons">{items}</ul></td></tr>\n'
+            f'<span class="slug">section {H.escape((numbers or {}).get(r.anchor, ""))}</span>'
+            f"</td>{''.join(cells)}</tr>\n"
         )
     return (
         '<table class="scoreboard" id="scoreboard">\n'
-        "<caption>Scoreboard</caption>\n"
+        "<caption>Counts per paper</caption>\n"
         f'<thead><tr class="groups"><th rowspan="2" class="paper">Paper</th>{groups}</tr>\n'
         f'<tr class="words">{words}</tr></thead>\n'
         f"<tbody>\n{''.join(body)}</tbody>\n</table>\n"
     )
 
 
-def _toc(sections: Sequence[Section], numbers: dict[str, str], depth: int = 2) -> str:
+def _toc(
+    sections: Sequence[Section],
+    appendices: Sequence[Section],
+    numbers: dict[str, str],
+    depth: int = 2,
+) -> str:
     def items(secs: Sequence[Section], level: int) -> str:
         out = []
         for s in secs:
@@ -235,15 +194,15 @@ def _toc(sections: Sequence[Section], numbers: dict[str, str], depth: int = 2) -
             )
         return "<ul>\n" + "".join(out) + "</ul>\n"
 
-    return f'<nav class="toc" id="contents">\n<h2>Contents</h2>\n{items(sections, 1)}</nav>\n'
+    apps = f"<h3>Appendices</h3>\n{items(appendices, 1)}" if appendices else ""
+    return f'<nav class="toc" id="contents">\n<h2>Contents</h2>\n{items(sections, 1)}{apps}</nav>\n'
 
 
 def render_html(doc: Document) -> str:
     """The whole report as one self-contained HTML document (a ``str``)."""
-    numbers = section_numbers(doc.sections)
-    # the sections first: they hand out the row anchors the scoreboard links to
+    numbers = section_numbers(doc.sections, doc.appendices)
     anchors = Anchors(papers={r.slug for r in doc.scoreboard})
-    sections = "".join(render_section(s, numbers, 2, anchors) for s in doc.sections)
+    sections = render_sections(doc.sections, doc.appendices, numbers, anchors)
     body = (
         '<header class="title">\n'
         f"<h1>{H.escape(doc.title)}</h1>\n"
@@ -251,18 +210,18 @@ def render_html(doc: Document) -> str:
         f'<p class="generated">Generated from the workflow\'s results at git describe '
         f"<code>{H.escape(doc.generated_from)}</code>.</p>\n</header>\n"
     )
-    body += _scoreboard(doc.scoreboard, numbers, anchors)
+    if doc.abstract:
+        body += f'<section class="abstract" id="abstract">\n<h2>Abstract</h2>\n{H.paragraph(doc.abstract)}</section>\n'
+    body += paper_summaries(doc.scoreboard, numbers)
+    body += _scoreboard(doc.scoreboard, numbers)
     body += (
         '<p class="legend">Each number counts rows of the paper\'s equation_audit.csv or '
-        "verdicts.csv. Green: the paper and this reproduction agree (a printed equation matches "
-        "the derivation; a published number is reproduced exactly or is consistent with the "
-        "Monte Carlo spread; a claim holds). Red: they disagree (a printed equation differs, "
-        "usually a typo, and the derived form is used; a number or claim is not reproduced). "
-        "Grey: not checkable. "
-        'Each paper\'s name links to its section; <a href="#how-to-read">how to read '
-        "this report</a>.</p>\n"
+        "verdicts.csv. Green: the paper and this reproduction agree. Red: they disagree (a "
+        "number or claim is not reproduced; a printed equation is an error of the paper). "
+        "Amber: a printed equation differs as an artefact of the text or a convention. Grey: "
+        'not checkable. See <a href="#introduction">the introduction</a> for the words.</p>\n'
     )
-    body += _toc(doc.sections, numbers)
+    body += _toc(doc.sections, doc.appendices, numbers)
     body += sections
     return H.page(doc.title, body, css=CSS)
 

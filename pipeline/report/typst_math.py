@@ -1,23 +1,10 @@
 """SymPy expressions as Typst math-mode source (for the PDF report).
 
 ``typst_math(expr)`` returns what goes between ``$ ... $`` in a Typst document: no delimiters,
-no ``#`` code, only math syntax, so the result can be pasted into any equation.
-
-Symbol names follow the conventions of the ``derivations`` packages:
-
-* ``name`` splits at the first underscore into a stem and subscripts: ``omega_x`` -> ω_x,
-  ``P_pred_11`` -> P_(pred, 11) (subscript parts separated by commas);
-* Greek names (``alpha`` ... ``omega``, ``Alpha`` ... ``Omega``) and ``ell`` become symbols;
-  a stem that starts with ``Delta``/``delta`` keeps it as a prefix (``DeltaV_x`` -> ΔV_x);
-* trailing digits of a stem are a subscript (``C11`` -> C_11, ``Gc1_12`` -> G c_(1, 12));
-* ``_dot`` / ``_ddot`` parts and ``hat`` / ``dot`` / ``ddot`` / ``bar`` / ``tilde`` stem
-  suffixes are accents (``psi_dot`` -> ψ̇, ``phi_i_ddot`` -> φ̈_i, ``xhat_1`` -> x̂_1);
-* a paper's own stems with a fixed rendering are passed as ``stems`` (its
-  ``Paper.math_stems``): ``typst_math(x, stems={"xt": "tilde(x)"})``;
-* other multi-letter stems: up to two letters are italic letters side by side (``ax`` ->
-  ax, as a product would be typeset), longer ones upright text (``"xpred"``); subscript words
-  likewise (``n_wx`` -> n_(w x), ``f_norm`` -> f_"norm");
-* trailing primes are primes (``A'``).
+no ``#`` code, only math syntax, so the result can be pasted into any equation. Symbol names
+are printed by :func:`pipeline.report.typst_symbols.symbol_name` (its docstring has the
+conventions); a paper's own stems are passed as ``stems``:
+``typst_math(x, stems={"xt": "tilde(x)"})``.
 
 Matrices use square brackets (``mat(delim: "[", ...)``), fractions ``frac(a, b)``, square roots
 ``sqrt``; ``atan2`` is upright text applied to its arguments; ``Abs`` is ``abs``. Anything the
@@ -28,7 +15,6 @@ so the output is always valid Typst.
 from __future__ import annotations
 
 import re
-from collections.abc import Mapping
 from typing import Any
 
 import sympy as sp
@@ -36,34 +22,10 @@ from sympy.core.function import AppliedUndef
 from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.printer import Printer
 
-__all__ = [
-    "TypstMathPrinter",
-    "symbol_name",
-    "typst_math",
-    "typst_math_breakable",
-    "typst_string",
-]
+from pipeline.report.typst_symbols import symbol_name, typst_string
 
-GREEK = (
-    "alpha beta gamma delta epsilon zeta eta theta iota kappa lambda mu nu xi omicron pi rho "
-    "sigma tau upsilon phi chi psi omega"
-).split()
-#: Greek names (both cases) -> Typst symbol names.
-GREEK_NAMES = {g: g for g in GREEK} | {g.capitalize(): g.capitalize() for g in GREEK}
-GREEK_NAMES |= {"varepsilon": "epsilon.alt", "varphi": "phi.alt", "vartheta": "theta.alt"}
-OTHER_NAMES = {"ell": "ell", "nabla": "nabla", "hbar": "planck.reduce", "infty": "infinity"}
+__all__ = ["TypstMathPrinter", "symbol_name", "typst_math", "typst_string"]
 
-#: Stem suffixes and subscript parts that are accents.
-ACCENTS = {
-    "ddot": "dot.double",
-    "dot": "dot",
-    "hat": "hat",
-    "tilde": "tilde",
-    "bar": "overline",
-    "vec": "arrow",
-}
-
-#: SymPy function names -> Typst operators (upright, with the right spacing).
 FUNCTIONS = {
     "sin": "sin",
     "cos": "cos",
@@ -100,90 +62,6 @@ TEXT_FUNCTIONS = {
     "im": "Im",
     "arg": "arg",
 }
-
-_TOKEN = re.compile(r"[A-Za-z]+|[0-9]+|[^A-Za-z0-9]+")
-
-
-def typst_string(text: str) -> str:
-    """A Typst string literal (usable in markup, code and math)."""
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
-
-
-def _letters(word: str, *, short: int) -> str:
-    """A run of ASCII letters: Greek name, a single letter, up to ``short`` letters side by side
-    (italic, like a product), or upright text."""
-    if word in GREEK_NAMES:
-        return GREEK_NAMES[word]
-    if word in OTHER_NAMES:
-        return OTHER_NAMES[word]
-    if len(word) == 1:
-        return word
-    if len(word) <= short:
-        return " ".join(word)
-    return typst_string(word)
-
-
-def _word(word: str, *, short: int) -> str:
-    """A name fragment of letters, digits and other characters (each run printed on its own)."""
-    out = []
-    for tok in _TOKEN.findall(word):
-        if tok.isdigit():
-            out.append(tok)
-        elif tok.isalpha() and tok.isascii():
-            out.append(_letters(tok, short=short))
-        else:
-            out.append(typst_string(tok))
-    return " ".join(out)
-
-
-def _stem(stem: str, stems: Mapping[str, str]) -> tuple[str, list[str]]:
-    """(Typst source of a stem, extra subscript parts taken from its trailing digits)."""
-    if stem in stems:
-        return stems[stem], []
-    m = re.fullmatch(r"([A-Za-z]+?)([0-9]+)", stem)
-    if m and not stem.isdigit():
-        body, subs = _stem(m.group(1), stems)
-        return body, [*subs, m.group(2)]
-    for prefix in ("Delta", "delta"):
-        if stem.startswith(prefix) and len(stem) > len(prefix):
-            inner, subs = _stem(stem[len(prefix) :], stems)
-            return f"{prefix} {inner}", subs
-    for suffix, accent in ACCENTS.items():
-        if stem.endswith(suffix) and len(stem) > len(suffix) and stem[: -len(suffix)].isalpha():
-            inner, subs = _stem(stem[: -len(suffix)], stems)
-            return f"{accent}({inner})", subs
-    if re.fullmatch(r"[A-Za-z]+", stem):
-        return _letters(stem, short=2), []
-    return (_word(stem, short=2) if stem else typst_string(stem)), []
-
-
-def symbol_name(name: str, stems: Mapping[str, str] | None = None) -> str:
-    """Typst math source of a SymPy symbol name (see the module docstring); ``stems``: whole
-    stems with a fixed rendering.
-
-    >>> symbol_name("xt_1", {"xt": "tilde(x)"}), symbol_name("xt_1")
-    ('tilde(x)_1', 'x t_1')
-    """
-    primes = len(name) - len(name.rstrip("'"))
-    name = name.rstrip("'")
-    stem, *parts = name.split("_")
-    base, subs = _stem(stem, stems or {})
-    accents = []
-    for part in parts:
-        if part in ("dot", "ddot"):
-            accents.append(ACCENTS[part])
-        elif part:
-            subs.append(_word(part, short=2))
-    for accent in accents:
-        base = f"{accent}({base})"
-    out = base
-    if primes:
-        out = f"{out}{chr(39) * primes}"
-    if subs:
-        sub = ", ".join(subs)
-        single = len(subs) == 1 and re.fullmatch(r"[A-Za-z]|[0-9]+|[A-Za-z]+|\"[^\"]*\"", sub)
-        out = f"{out}_{sub}" if single else f"{out}_({sub})"
-    return out
 
 
 class TypstMathPrinter(Printer):
@@ -505,62 +383,6 @@ class TypstMathPrinter(Printer):
 
     def _print_ZeroMatrix(self, expr: Any) -> str:
         return "0"
-
-
-class _BreakablePrinter(TypstMathPrinter):
-    """For inline (line-breaking) math: Typst breaks an inline equation after top-level ``+``,
-    ``-`` and relations only, never inside ``frac`` or a ``(...)`` group. This printer keeps
-    sums at the top level: ``frac(a + b, c)`` becomes ``frac(1, c) \\( a + b \\)``, a sum inside
-    a product is bracketed with literal parentheses (which do not form a group), and a sum in a
-    denominator is written after a literal slash: ``\\( a + b \\) \\/ \\( c + d \\)``."""
-
-    def _top(self, expr: Any) -> str:
-        if isinstance(expr, sp.Add):
-            out = ""
-            for i, term in enumerate(self._as_ordered_terms(expr, order=self._settings["order"])):
-                text = self._top(term)
-                if text.startswith("-"):
-                    out += ("-" if i == 0 else " - ") + text[1:].lstrip()
-                else:
-                    out += text if i == 0 else " + " + text
-            return out
-        if isinstance(expr, sp.Mul) and any(isinstance(f, sp.Add) for f in self._flat(expr)):
-            sign, num, den = self._split_fraction(expr)
-            order = {a: i for i, a in enumerate(expr.as_ordered_factors())}
-            num.sort(key=lambda a: order.get(a, -1))
-            parts = []
-            for f in num:
-                if isinstance(f, sp.Add):
-                    parts.append(f"\\( {self._top(f)} \\)")
-                else:
-                    parts.append(self.parenthesize(f, PRECEDENCE["Mul"]))
-            if any(isinstance(d, sp.Add) for d in den):
-                # a sum in the denominator: "(num) / (den)" with literal parentheses and slash,
-                # so both sums break across lines (a frac never does)
-                top = " ".join(parts) if parts else "1"
-                return ("-" if sign < 0 else "") + f"{top} \\/ \\( {self._top(sp.Mul(*den))} \\)"
-            if den:
-                parts.insert(0, f"frac(1, {self._product(den)})")
-            return ("-" if sign < 0 else "") + " ".join(parts)
-        return self._print(expr)
-
-    def _flat(self, expr: sp.Mul) -> list[Any]:
-        out = []
-        for f in expr.args:
-            if f.is_Pow and f.exp.is_negative:
-                out.append(f.base)
-            out.append(f)
-        return out
-
-
-def typst_math_breakable(expr: Any, **settings: Any) -> str:
-    """Like :func:`typst_math`, for an *inline* equation that may break across lines: the
-    top-level sum of a scalar expression stays breakable (also inside a fraction's numerator or
-    a product). Matrices and tuples print as :func:`typst_math` would."""
-    printer = _BreakablePrinter(settings)
-    if isinstance(expr, (tuple, list, sp.Tuple)):
-        return ", quad ".join(printer._top(sp.sympify(e)) for e in expr)
-    return printer._top(sp.sympify(expr))
 
 
 def typst_math(expr: Any, **settings: Any) -> str:

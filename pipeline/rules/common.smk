@@ -57,10 +57,11 @@ def code(*modules, script=None):
 
 def step_modules(paper, step):
     """The modules a step runs: its entry's, the paper's plug-in (loaded by name through the
-    registry) and, for a page step, the paper's report sections (``Paper.report``)."""
+    registry) and, for a page step, the paper's report sections (``Paper.report``) and its
+    discussion (``Paper.discussion``)."""
     modules = [step.module, f"pipeline.{paper.slug}.paper"]
-    if step.entry.endswith(":page_step") and paper.report:
-        modules.append(paper.report.split(":")[0])
+    if step.entry.endswith(":page_step"):
+        modules += paper.report_modules
     return modules
 
 
@@ -136,9 +137,7 @@ def reproduction_inputs():
     named.update({k: [] for k in ("provenance", "figures", "svg", "pages", "notebooks")})
     # each paper's report sections (Paper.report), loaded by name: its import graph
     named["page_inputs"] = []
-    named["paper_code"] = module_closure(
-        [p.report.split(":")[0] for p in PAPERS.values() if p.report]
-    )
+    named["paper_code"] = module_closure([m for p in PAPERS.values() for m in p.report_modules])
     for slug, paper in PAPERS.items():
         ctx = CONTEXTS[slug]
         named["audits"].append(f"{ctx.results}/equation_audit.csv")

@@ -35,6 +35,7 @@ from typing import Any, Protocol
 import jsonschema
 
 from pipeline.config import ConfigError, load_schema, load_yaml
+from pipeline.verdicts.main_claims import check_main_claims
 
 __all__ = [
     "SCHEMA_NAME",
@@ -67,6 +68,10 @@ def _where(data: Any, path: Sequence[Any]) -> tuple[str, list[Any]]:
         ident = entry.get("id") if isinstance(entry, Mapping) else None
         kind = "item" if path[0] == "items" else "claim"
         return f"{kind} {ident!r} ({path[0]}[{path[1]}])", list(path[2:])
+    if len(path) >= 2 and path[0] == "main_claims" and isinstance(path[1], int):
+        entry = data[path[0]][path[1]]
+        label = entry.get("label") if isinstance(entry, Mapping) else None
+        return f"main claim {label!r} (main_claims[{path[1]}])", list(path[2:])
     return "top level", list(path)
 
 
@@ -222,6 +227,8 @@ def check_published(
         if check_item is not None:
             for field, value, allowed in check_item(item):
                 problems.append(_line(filename, where, field, value, allowed))
+    for where, field, value, allowed in check_main_claims(data):
+        problems.append(_line(filename, where, field, value, allowed))
     if claims is not None:
         for index, claim in enumerate(data["claims"]):
             where, _ = _where(data, ["claims", index])

@@ -1,6 +1,7 @@
 """The shared document model (pipeline.report.model), a paper's page (page_html) and its
 section of the combined report (paper_section), with a paper that is not one of the project's
-(its report function lives here): the shared report code needs nothing but the Paper object."""
+(its report function lives here): the shared report code needs nothing but the Paper object,
+and the page and the paper's section of the combined report follow one template."""
 
 from __future__ import annotations
 
@@ -24,9 +25,9 @@ from pipeline.report.model import (
     Table,
     frame_table,
 )
-from pipeline.report.page_html import build_page, render_page
-from pipeline.report.paper_section import PaperParts, paper_section
-from pipeline.report.scoreboard import score_row
+from pipeline.report.page_html import build_page, page_sections, render_page
+from pipeline.report.paper_parts import load_parts
+from pipeline.report.paper_section import MAIN_TITLES, paper_section, supporting_section
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -43,6 +44,8 @@ def report(inputs: ReportInputs) -> PaperReport:
             Section("summary", "Summary", [Paragraph(f"{len(df)} periods."), Bullets(["a", "b"])]),
             Section("periods", "Periods", [frame_table(df, status="verdict")]),
             Section("figures", "Figures", figs),
+            Section("finding", "A finding", [Paragraph("The period grows with amplitude.")]),
+            Section("support", "Supporting runs", [Paragraph("Ten runs per length.")]),
             Section(
                 "assumptions",
                 "Assumptions",
@@ -54,10 +57,14 @@ def report(inputs: ReportInputs) -> PaperReport:
             "summary": ["summary"],
             "published": None,
             "figures": ["figures"],
-            "findings": [],
+            "findings": ["finding", "support"],
             "assumptions": ["assumptions"],
         },
     )
+
+
+def discussion(inputs: ReportInputs) -> list:
+    return [Paragraph("Easy: the period. Hard: nothing.")]
 
 
 PENDULUM = Paper(
@@ -71,7 +78,20 @@ PENDULUM = Paper(
     ),
     report=f"{__name__}:report",
     math_stems={"thetat": "tilde(theta)"},
+    discussion=f"{__name__}:discussion",
 )
+
+PUBLISHED = """paper: pendulum
+items:
+  - {id: T1.a, label: Table 1, kind: exact, quantity: period_s, value: "2.01", select: {method: m1}}
+  - {id: T1.b, label: Table 1, kind: exact, quantity: period_s, value: "1.4", select: {method: m2}}
+claims:
+  - {id: C1, label: Sec. 3, text: "The period does not depend on the mass.", predicate: {test: t}}
+main_claims:
+  - {label: Abstract, text: "The small-angle period formula holds.", rows: [T1.]}
+  - {label: Sec. 3, text: "Mass does not matter.", rows: [C1]}
+names: {period_s: period, m1: the first pendulum, m2: the second pendulum}
+"""
 
 
 @pytest.fixture
@@ -81,6 +101,50 @@ def inputs(tmp_path: Path) -> ReportInputs:
     pd.DataFrame(
         {"id": ["T1", "T2"], "value": ["2.01", "1.4"], "verdict": ["reproduced", "differs"]}
     ).to_csv(results / "period.csv", index=False)
+    pd.DataFrame(
+        {
+            "equation": ["1", "2"],
+            "status": ["match", "differs"],
+            "residual": ["0", "x"],
+            "note": ["", "typo of the paper: a factor 2 is lost; see the derivation"],
+            "kind": ["", "paper_error"],
+        }
+    ).to_csv(results / "equation_audit.csv", index=False)
+    base = {"quantity": "period_s", "note": "", "tolerance": "", "reason": ""}
+    pd.DataFrame(
+        [
+            {
+                **base,
+                "id": "T1.a",
+                "kind": "exact",
+                "method": "m1",
+                "published": "2.01",
+                "reproduced": "2.0063",
+                "verdict": "reproduced",
+            },
+            {
+                **base,
+                "id": "T1.b",
+                "kind": "exact",
+                "method": "m2",
+                "published": "1.4",
+                "reproduced": "1.5123",
+                "verdict": "not_reproduced",
+            },
+            {
+                **base,
+                "id": "C1",
+                "kind": "claim",
+                "method": "",
+                "quantity": "",
+                "published": "The period does not depend on the mass.",
+                "reproduced": "no mass effect",
+                "verdict": "upheld",
+            },
+        ]  # fmt: skip
+    ).to_csv(results / "verdicts.csv", index=False)
+    (tmp_path / "config" / "published").mkdir(parents=True)
+    (tmp_path / "config" / "published" / "pendulum.yaml").write_text(PUBLISHED, encoding="utf-8")
     (results / "figures").mkdir()
     from PIL import Image
 
@@ -90,28 +154,57 @@ def inputs(tmp_path: Path) -> ReportInputs:
 
 def test_frame_table_formats_and_marks_failures():
     t = frame_table(
-        pd.DataFrame({"x": [0.1 + 0.2, float("nan")], "status": ["match", "differs"]}),
+        pd.DataFrame({"x": [0.1 + 0.2, float("nan")], "status": ["match", "not_upheld"]}),
         status="status",
         caption="c",
     )
-    assert t.rows == [["0.3", "match"], ["", "differs"]]
-    assert t.highlight == [1] and t.row_status == ["match", "differs"] and t.caption == "c"
+    assert t.rows == [["0.3", "match"], ["", "not_upheld"]]
+    assert t.highlight == [1] and t.row_status == ["match", "not_upheld"] and t.caption == "c"
+    # a printed equation that differs is no failure by itself (only an error of the paper is)
+    assert frame_table(pd.DataFrame({"s": ["differs"]}), status="s").highlight == []
     with pytest.raises(ValueError, match="status column 'verdict'"):
         frame_table(pd.DataFrame({"x": [1]}), status="verdict")
 
 
-def test_page_renders_the_papers_sections(inputs, tmp_path):
+def _text(html: str) -> str:
+    """The text of an HTML document (tags and attributes dropped)."""
+    body = re.sub(r"<style>.*?</style>", " ", html, flags=re.S)
+    return " ".join(re.sub(r"<[^>]+>", " ", body).split())
+
+
+def test_page_follows_the_template(inputs, tmp_path):
     out = build_page(PENDULUM, inputs, tmp_path / "reports" / "pendulum.html")
     text = out.read_text(encoding="utf-8")
     assert "<h1>Reproduction report: The period of a pendulum &lt;small&gt;</h1>" in text
+    parts = load_parts(PENDULUM, inputs)
+    sections, appendices = page_sections(parts)
+    # the template's sections, in its order, then the discussion; then the appendices
+    assert [s.title for s in sections] == [*MAIN_TITLES, "Discussion"]
+    assert [s.title for s in appendices] == [
+        "Equation audit: the forms",
+        "Supporting results",
+        "Assumptions where the paper is silent",
+        "The paper's own sections",
+    ]
     toc = re.search(r'<nav class="toc">(.*?)</nav>', text, re.S).group(1)
-    assert re.findall(r'href="#([^"]+)"', toc) == ["summary", "periods", "figures", "assumptions"]
-    assert '<tr class="v-differs">' in text and '<tr class="v-reproduced">' in text
-    assert "<li>a</li>" in text
+    # on its own page a paper's ids need no prefix
+    assert re.findall(r'href="#([^"]+)"', toc)[:2] == ["summary", "equations"]
+    assert [s.id for s in sections][:2] == ["summary", "equations"]
+    # the main claims, marked from the verdict rows; the three sentences in the paper's words
+    assert '<span class="mark m-not-re">[¬Re]</span> The small-angle period formula holds.' in text
+    assert '<span class="mark m-re">[Re]</span> Mass does not matter.' in text
+    assert "Table 1, the second pendulum, period" in text
+    assert "T1.b" not in _text(text)  # no internal id
+    assert "Easy: the period. Hard: nothing." in text  # the paper's discussion
+    assert "Ten runs per length." in text  # its supporting results, in an appendix
     assert text.count("data:image/png;base64,") == 1  # the extra figure's file is absent
     assert "Extra fig. 1 (fig_extra.png): not available." in text
     assert "Fig. 1</strong> (paper Fig. 1): period against length." in text
-    again = render_page(PENDULUM, report(inputs))
+    # only an error of the paper is red
+    assert '<span class="v-differs t-bad k-paper-error">differs: error of the paper</span>' in text
+    for token in ("not_reproduced", "not_upheld", "not_checkable"):
+        assert token not in _text(text)
+    again = render_page(PENDULUM, load_parts(PENDULUM, inputs))
     assert again == text  # the same inputs, the same bytes
 
 
@@ -124,41 +217,21 @@ def test_missing_input_names_the_file_and_writes_nothing(inputs, tmp_path):
 
 
 def test_paper_section_is_assembled_from_the_papers_parts(inputs):
-    rep = report(inputs)
-    audit = pd.DataFrame(
-        {"equation": ["1"], "status": ["match"], "residual": ["0"], "note": [""], "kind": [""]}
-    )
-    verdicts = pd.DataFrame(
-        {
-            "id": ["T1"],
-            "kind": ["exact"],
-            "quantity": ["T"],
-            "method": [""],
-            "published": ["2.01"],
-            "reproduced": ["2.01"],
-            "verdict": ["reproduced"],
-            "note": [""],
-        }
-    )
-    score = score_row("pendulum", PENDULUM.title, audit, verdicts)
-    eq = Section("pendulum-equations", "Equation audit", [])
-    pub = Section("pendulum-published", "Published vs reproduced", [])
-    sec = paper_section(
-        PaperParts("pendulum", PENDULUM.title, PENDULUM.citation, score, rep, eq, pub)
-    )
+    parts = load_parts(PENDULUM, inputs)
+    sec = paper_section(parts, "Appendix A.1")
     assert sec.id == "pendulum"
-    assert [s.title for s in sec.subsections] == [
-        "Summary",
-        "Equation audit",
-        "Published vs reproduced",
-        "Figures",
-        "Assumptions",
-        "Findings beyond the paper",
-        "Notebook",
-    ]
-    summary, _, _, figures, assumptions, findings, _ = sec.subsections
-    assert summary.blocks[0] == Paragraph(score.line)
+    assert tuple(s.title for s in sec.subsections) == MAIN_TITLES
+    summary, audit, published, claims, figures, findings = sec.subsections
     assert Paragraph("2 periods.") in summary.blocks
+    # the combined report has the marks and sentences at its front; its page in the summary
+    assert summary.blocks[0].text.startswith("Partial reproduction; 1 of 2 main claims [Re].")
+    page_summary = paper_section(parts, page=True).subsections[0]
+    (marks,) = [b for b in page_summary.blocks if type(b).__name__ == "MainClaims"]
+    assert [m.mark for m in marks.lines] == ["not_Re", "Re"]
+    assert "forms are in Appendix A.1" in audit.blocks[0].text
+    assert audit.blocks[1].items == [
+        "Eq. 2 (error of the paper): typo of the paper: a factor 2 is lost"
+    ]
     # the paper's figure stays under Figures; the one not in the paper goes to the findings
     assert [b.label for b in figures.blocks if isinstance(b, Figure)] == ["Fig. 1"]
     (extra,) = [b for b in findings.blocks if isinstance(b, Figure)]
@@ -166,13 +239,27 @@ def test_paper_section_is_assembled_from_the_papers_parts(inputs):
     assert (
         extra.caption == "(not in the paper): the period against amplitude. (figure file fig_extra)"
     )
-    # a subsection holding one table becomes that table, captioned with its title
-    assert [b.caption for b in assumptions.blocks if isinstance(b, Table)] == ["Scenario one"]
-    assert not assumptions.subsections
+    # the first findings section is the finding; the others support it (an appendix)
+    assert Paragraph("The period grows with amplitude.") in findings.blocks
+    assert Paragraph("Ten runs per length.") not in findings.blocks
+    (support,) = supporting_section(parts).subsections
+    assert (
+        support.title == "Supporting runs" and Paragraph("Ten runs per length.") in support.blocks
+    )
+    # the published numbers by the paper's table, in its words, at printed precision + 2
+    (table,) = [b for b in published.blocks if isinstance(b, Table)]
+    assert table.caption == "Table 1: period"
+    assert [r[:3] for r in table.rows] == [["the first pendulum", "2.01", "2.0063"],
+                                           ["the second pendulum", "1.4", "1.512"]]  # fmt: skip
+    assert table.columns[2] == "ours" and table.highlight == [1]
+    (ctable,) = [b for b in claims.blocks if isinstance(b, Table)]
+    assert ctable.rows[0][0] == "“The period does not depend on the mass” (Sec. 3)"
 
-    bad = PaperReport(rep.sections, {**rep.parts, "findings": ["no-such-section"]})
-    with pytest.raises(ValueError, match="no-such-section"):
-        paper_section(PaperParts("pendulum", "t", "", score, bad, eq, pub))
+    bad = PaperReport(parts.report.sections, {**parts.report.parts, "findings": ["nope"]})
+    from dataclasses import replace
+
+    with pytest.raises(ValueError, match="nope"):
+        paper_section(replace(parts, report=bad))
 
 
 def test_combined_report_names_a_missing_results_file(tmp_path):
@@ -183,23 +270,30 @@ def test_combined_report_names_a_missing_results_file(tmp_path):
 
 def test_the_papers_math_stems_reach_the_pdf():
     from pipeline.report.document import Document
-    from pipeline.report.equations import equation_section
+    from pipeline.report.equations import equation_appendix, equation_rows
     from pipeline.report.reproduction_pdf import render_typst
 
     audit = pd.DataFrame(
-        {"equation": ["1"], "status": ["match"], "residual": ["0"], "note": [""], "kind": [""]}
+        {"equation": ["1"], "status": ["differs"], "residual": ["x"], "note": [""]}
     )
-    forms = [{"equation": "1", "printed_srepr": "Symbol('thetat_1')"}]
-    counts = {"match": 1, "differs": 0, "not_checkable": 0}
-    sec = equation_section("pendulum", audit, forms, counts, PENDULUM.math_stems)
+    forms = [
+        {
+            "equation": "1",
+            "printed_srepr": "Symbol('thetat_1')",
+            "derived_srepr": "Integer(0)",
+            "residual_srepr": "Symbol('thetat_1')",
+        }
+    ]
+    rows = equation_rows("pendulum", audit, forms)
+    sec = equation_appendix("pendulum", "P", rows, PENDULUM.math_stems)
     assert sec.blocks[1].stems == {"thetat": "tilde(theta)"}
     doc = Document("t", "s", "v0", [], [Section("pendulum", "P", [], [sec])])
     assert "tilde(theta)_1" in render_typst(doc)
-    plain = Section("pendulum", "P", [], [equation_section("pendulum", audit, forms, counts, {})])
+    plain = equation_appendix("pendulum", "P", rows, {})
     assert "tilde(theta)" not in render_typst(Document("t", "s", "v0", [], [plain]))
 
 
-def test_published_tables_show_tolerance_and_reason_where_recorded(tmp_path):
+def test_published_tables_show_tolerance_and_cause(tmp_path):
     from pipeline.report.published import published_section
 
     published = tmp_path / "p.yaml"
@@ -219,17 +313,26 @@ def test_published_tables_show_tolerance_and_reason_where_recorded(tmp_path):
     )
     sec = published_section("p-published", verdicts, published)
     tables = [b for b in sec.blocks if isinstance(b, Table)]
-    # by the number in the paper's table or figure label (10 after 2), then the claims
-    assert [t.caption for t in tables] == [
-        "Table 2: published numbers",
-        "Fig. 10: published numbers",
-        "Table 10: published numbers",
-        "Claims",
-    ]
+    # by the number in the paper's table or figure label (10 after 2); one quantity: captioned
+    assert [t.caption for t in tables] == ["Table 2: q", "Fig. 10: q", "Table 10: q"]
     assert tables[1].highlight == [0] and tables[0].highlight == []
-    assert "tolerance" not in tables[0].columns
-    verdicts = verdicts.assign(tolerance="0.5 %", reason="within the tolerance")
-    tables = [b for b in published_section("p", verdicts, published).blocks if isinstance(b, Table)]
-    assert tables[0].columns[-2:] == ["tolerance", "reason"]
-    assert tables[0].rows[0][-2:] == ["0.5 %", "within the tolerance"]
-    assert tables[-1].columns[-1] == "reason" and tables[-1].rows[0][-1] == "within the tolerance"
+    assert tables[0].columns == ["item", "published", "ours", "tolerance", "verdict", "why"]
+    verdicts = verdicts.assign(
+        tolerance="+-20% of 1 (an 'about' value the authors read off their own plot)",
+        reason="within the tolerance",
+        cause_kind=["", "unpublished", "", ""],
+        cause=["", "the paper does not publish the trajectory", "", ""],
+    )
+    sec = published_section("p", verdicts, published)
+    tables = [b for b in sec.blocks if isinstance(b, Table)]
+    assert tables[0].columns[-1] == "cause"
+    assert tables[1].rows[0][3:] == [
+        "+-20% of 1",
+        "not_reproduced",
+        "within the tolerance",
+        "the paper does not publish the trajectory (cannot be reproduced from what the paper "
+        "publishes (not refuted))",
+    ]
+    assert (
+        Paragraph("Tolerance: an 'about' value the authors read off their own plot.") in sec.blocks
+    )

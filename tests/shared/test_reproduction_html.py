@@ -4,7 +4,8 @@ Two cases, each checked in full:
 
 * ``repository``: the document built from the repository's own ``results/`` and ``reports/``
   (on a fresh clone, from the reduced workflow run of ``results_repo``, tests/conftest.py);
-* ``synthetic``: a small results tree written here (verdicts and audit rows for every
+* ``synthetic``: a small results tree written here (verdicts and audit rows, with the kinds of
+  the differing equations, for every
   published item of the repository's ``config/published``, MathML, distinct PNG figures,
   provenance, benchmarks) with the per-paper pages rendered from the papers' report sections
   (``pipeline.report.page_html``). It always runs, so the suite never passes without checking a
@@ -110,7 +111,8 @@ def _synthetic_tree(base: Path) -> Path:
                     "0" if s == "match" else ("x - 1" if s == "differs" else "") for s in statuses
                 ],  # fmt: skip
                 "note": [f"note {i}" for i in range(len(statuses))],
-                "kind": ["paper_error" if s == "differs" else "" for s in statuses],
+                # the two differing rows: an error of the paper and an artefact of the text
+                "kind": ["", "paper_error", "", "", "text_artefact", "", ""],
             }
         )
         audit.to_csv(rdir / "equation_audit.csv", index=False)
@@ -273,13 +275,14 @@ def test_html_parses_and_every_reference_resolves(built):
 
 
 def test_mathml_is_well_formed_and_present(built):
+    from pipeline.report.model import EquationTable, walk
+
     maths = re.findall(r"<math\b.*?</math>", built.html, flags=re.S)
     n_expected = sum(
         1
-        for s in built.doc.sections
-        for sub in s.subsections
-        for b in sub.blocks
-        if type(b).__name__ == "EquationTable"
+        for s in walk(built.doc.appendices)
+        for b in s.blocks
+        if isinstance(b, EquationTable)
         for r in b.rows
         # the same expression printed and derived is shown once, as "printed = derived"
         for m in (
@@ -299,18 +302,22 @@ def test_rendering_is_deterministic(built):
 
 
 def test_sections_in_the_documented_order(built):
+    from pipeline.report.paper_section import MAIN_TITLES
+
     ids = [s.id for s in built.doc.sections]
-    assert ids == ["how-to-read", *SLUGS, "provenance"]
-    for slug, sec in zip(SLUGS, built.doc.sections[1:-1], strict=True):
-        assert [s.title for s in sec.subsections] == [
-            "Summary",
-            "Equation audit",
-            "Published vs reproduced",
-            "Figures",
-            "Assumptions",
-            "Findings beyond the paper",
-            "Notebook",
-        ], slug
+    assert ids == ["introduction", *SLUGS, "discussion", "references"]
+    assert [s.id for s in built.doc.appendices] == [
+        "equation-audits",
+        "supporting",
+        "assumptions",
+        "provenance",
+    ]
+    for slug in SLUGS:
+        sec = next(s for s in built.doc.sections if s.id == slug)
+        assert tuple(s.title for s in sec.subsections) == MAIN_TITLES, slug
+    # the papers' discussions, the same order
+    discussion = next(s for s in built.doc.sections if s.id == "discussion")
+    assert [s.id for s in discussion.subsections] == [f"discussion-{s}" for s in SLUGS]
 
 
 def _figures(section):
@@ -323,7 +330,8 @@ def test_pages_and_report_show_the_same_figures(built):
     """The combined report and each page are rendered from the same sections: every figure of
     a paper (label, caption, file) is on its page and in its section of the report, and the
     report reads no page (removing the pages changes nothing)."""
-    for slug, sec in zip(SLUGS, built.doc.sections[1:-1], strict=True):
+    for slug in SLUGS:
+        sec = next(s for s in built.doc.sections if s.id == slug)
         figs = _figures(sec)
         assert figs, slug
         page = (built.reports / f"{slug}.html").read_text(encoding="utf-8")
@@ -368,7 +376,8 @@ def _html_counts(html: str, slug: str) -> dict[str, dict[str, int]]:
     assert row, f"no scoreboard row for {slug}"
     out: dict[str, dict[str, int]] = {}
     for group, word, n in re.findall(
-        r'data-group="(\w+)" data-word="(\w+)">(\d+)</td>', row.group(1)
+        r'data-group="(\w+)" data-word="(\w+)">(\d+)(?:<span class="kinds">[^<]*</span>)?</td>',
+        row.group(1),
     ):
         out.setdefault(group, {})[word] = int(n)
     return out
@@ -394,65 +403,89 @@ def test_scoreboard_counts_equal_the_csv_counts(built):
         n_claims = sum(claims.values())
         if n_claims:
             assert f"{claims.get('upheld', 0)} of {n_claims} claim" in row.line
-        full = not (n_numbers - n_good) and claims.get("upheld", 0) == n_claims
-        assert row.line.startswith("Full reproduction" if full else ("Partial", "Not"))
+        # the status follows the main claims' marks (computed here from the CSV and the file)
+        marks = _expected_marks(built.root, row.slug)
+        if marks:
+            expected = (
+                "Full reproduction"
+                if all(m == "Re" for m in marks)
+                else "Not reproduced"
+                if not any(m == "Re" for m in marks)
+                else "Partial reproduction"
+            )
+            assert row.line.startswith(expected), (row.slug, marks)
+            assert [m.mark for m in row.summary.main_claims] == marks
 
 
-def test_scoreboard_ids_link_to_their_rows(built):
-    """Every id the scoreboard names as not reproduced / not upheld / not checkable is a link to
-    the first table row of that id in its paper's section (the ids come from verdicts.csv)."""
-    board = built.html[built.html.index('id="scoreboard"') : built.html.index("</table>")]
-    links = re.findall(r'<a class="ref" href="#([^"]+)">([^<]+)</a>', board)
-    rows = dict(re.findall(r'<tr[^>]* id="(row-[^"]+)"><td[^>]*>(?:<[^>]+>)?([^<]*)', built.html))
-    expected = 0
-    for slug in SLUGS:
-        v = pd.read_csv(built.root / "results" / slug / "verdicts.csv", dtype=str,
+def _expected_marks(root: Path, slug: str) -> list[str]:
+    """Each main claim's mark, recomputed from verdicts.csv and the published file."""
+    published = yaml.safe_load((root / "config" / "published" / f"{slug}.yaml").read_text("utf-8"))
+    v = pd.read_csv(root / "results" / slug / "verdicts.csv", dtype=str, keep_default_na=False)
+    marks = []
+
+    def named(i: str, entries: list[str]) -> bool:
+        return any(
+            i.startswith(e) if e.endswith(".") else (i == e or i.startswith(e + "/"))
+            for e in entries
+        )
+
+    for claim in published.get("main_claims") or []:
+        rows = v[[named(i, claim["rows"]) for i in v["id"]]]
+        verdicts = set(rows["verdict"])
+        if verdicts & {"not_reproduced", "not_upheld"}:
+            marks.append("not_Re")
+        elif verdicts <= {"reproduced", "consistent", "upheld"} and len(rows):
+            marks.append("Re")
+        else:
+            marks.append("not_checkable")
+    return marks
+
+
+def _text(html: str) -> str:
+    """The text a reader sees (tags, attributes and the stylesheet dropped)."""
+    body = re.sub(r"<style>.*?</style>", " ", html, flags=re.S)
+    return " ".join(re.sub(r"<[^>]+>", " ", body).split())
+
+
+def test_first_page_names_no_internal_id(built):
+    """The summaries name the paper's labels, never a verdict row id of verdicts.csv."""
+    for row in built.doc.scoreboard:
+        v = pd.read_csv(built.root / "results" / row.slug / "verdicts.csv", dtype=str,
                         keep_default_na=False)  # fmt: skip
-        failing = v[~v["verdict"].isin(["reproduced", "consistent", "upheld"])]
-        full = set(failing["id"])
-        names = full | {i.split("/")[0] for i in full}  # an item, or one curve's variant of it
-        line = next(r.line for r in built.doc.scoreboard if r.slug == slug)
-        named = {b for b in names if re.search(rf"(?<![\w./]){re.escape(b)}(?![\w/])", line)}
-        assert bool(named) == bool(full), slug  # the line names some (at most 5 per group)
-        mine = [(a, w) for a, w in links if a.startswith(f"row-{slug.replace('_', '-')}-")]
-        assert {w for _, w in mine} == named, slug
-        expected += len(named)
-        for anchor, word in mine:
-            target = rows[anchor]
-            assert (target if "/" in word else target.split("/")[0]) == word, (anchor, target)
-            if "/" in word:  # a single failing variant links to that variant's row
-                assert target in full
-    assert len(links) == expected
+        ids = set(v["id"]) | {i.split("/")[0] for i in v["id"]}
+        text = " ".join([*row.summary.sentences, *(m.basis for m in row.summary.main_claims)])
+        named = {i for i in ids if re.search(rf"(?<![\w.]){re.escape(i)}(?![\w/])", text)}
+        assert not named, (row.slug, sorted(named)[:5])
+        assert len(row.summary.sentences) == 3
+        assert row.summary.sentences[0].startswith("Reproduced")
 
 
-def test_line_names_the_failures():
-    audit = pd.DataFrame({"equation": ["1", "2"], "status": ["match", "differs"],
-                          "residual": ["0", "x"], "note": ["", ""],
-                          "kind": ["", "paper_error"]})  # fmt: skip
-    verdicts = pd.DataFrame(
-        [
-            ["A1", "exact", "q", "m", "1", "1", "reproduced", ""],
-            ["A2", "statistical", "q", "m", "1", "2", "not_reproduced", ""],
-            ["C1/a", "claim", "", "", "t", "e", "not_upheld", ""],
-            ["C1/b", "claim", "", "", "t", "e", "upheld", ""],
-        ],
-        columns=["id", "kind", "quantity", "method", "published", "reproduced", "verdict", "note"],
-    )
-    from pipeline.report.document import rescience_line
+def test_no_raw_verdict_tokens_in_the_text(built):
+    """One vocabulary: the reader sees 'not reproduced', never the CSV's token; in the report
+    and on every paper's page."""
+    pages = [built.html] + [
+        (built.reports / f"{slug}.html").read_text(encoding="utf-8") for slug in SLUGS
+    ]
+    for html in pages:
+        text = _text(html)
+        for token in ("not_reproduced", "not_upheld", "not_checkable"):
+            assert token not in text, token
 
-    line = rescience_line(audit, verdicts)
-    assert line.startswith("Partial reproduction: 1 of 2 published numbers")
-    assert "A2 (outside the Monte Carlo tolerance; ours 2x the published)" in line
-    near = verdicts.assign(reproduced=["1", "1.004", "e", "e"])
-    assert "A2 (outside the Monte Carlo tolerance; ours +0.4 % off the published)" in (
-        rescience_line(audit, near)
-    )
-    assert "not upheld: C1/a." in line  # only variant a fails: named as such
-    both = verdicts.assign(verdict=["reproduced", "not_reproduced", "not_upheld", "not_upheld"])
-    assert "not upheld: C1." in rescience_line(audit, both)  # every variant fails: the item
-    assert "1 of 2 printed equations differ" in line
-    good = verdicts.assign(verdict=["reproduced", "consistent", "upheld", "upheld"])
-    assert rescience_line(audit, good).startswith("Full reproduction")
+
+def test_only_errors_of_the_paper_are_red(built):
+    """A printed equation that differs is red (tone bad) only as an error of the paper; the
+    matching ones are listed, their forms in a collapsed <details>."""
+    rows = re.findall(r'<tr class="v-differs (t-\w+)"[^>]*>.*?<span class="v-differs t-\w+ '
+                      r'(k-[\w-]+)">([^<]*)</span>', built.html, flags=re.S)  # fmt: skip
+    assert rows
+    for tone_class, kind_class, words in rows:
+        assert (tone_class == "t-bad") == (kind_class == "k-paper-error"), words
+        assert words.startswith("differs: ")
+    if built.case == "synthetic":
+        kinds = {k for _, k, _ in rows}
+        assert {"k-paper-error", "k-text-artefact"} <= kinds
+    assert '<details class="matching"><summary>' in built.html
+    assert "<details open" not in built.html
 
 
 # --------------------------------------------------------------------------- 3. the browser
@@ -486,6 +519,6 @@ def test_chromium_loads_the_report_cleanly_and_screenshots_the_scoreboard(built,
 
     with Image.open(shot) as im:
         width, height = im.size
-        assert width == 1400 and 300 < height < 3000
+        assert width == 1400 and 300 < height < 9000
         colours = im.convert("RGB").getcolors(maxcolors=1 << 20)
         assert colours is not None and len(colours) > 50, "screenshot looks blank"

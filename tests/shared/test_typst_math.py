@@ -15,7 +15,8 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from pipeline.report.typst_math import symbol_name, typst_math, typst_math_breakable
+from pipeline.report.typst_breakable import typst_math_breakable
+from pipeline.report.typst_math import symbol_name, typst_math
 from tests.workflow_harness import NEEDS_RUN
 
 typst = pytest.importorskip("typst")

@@ -1,0 +1,193 @@
+"""The first page's summary of a paper (pipeline.report.summary) and the marks of its main
+claims (pipeline.verdicts.main_claims): validated with the published values, computed from the
+verdict rows, named in the paper's words, grouped and ranked by root cause."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pandas as pd
+import pytest
+import yaml
+
+from pipeline.config import ConfigError
+from pipeline.report.precision import compact_tolerance, reproduced_header, shown_reproduced
+from pipeline.report.summary import paper_summary
+from pipeline.report.vocabulary import differs_word, plain_words, tone
+from pipeline.verdicts.main_claims import judge_main_claims, mark
+from pipeline.verdicts.published import load_published
+
+ROOT = Path(__file__).resolve().parents[2]
+
+PUBLISHED = {
+    "paper": "demo",
+    "items": [
+        {"id": "T1.a", "label": "Table 1", "kind": "exact", "quantity": "phi_deg", "value": "1.5",
+         "select": {"method": "M4"}},
+        {"id": "T1.b", "label": "Table 1", "kind": "exact", "quantity": "theta_deg",
+         "value": "2.5", "select": {"method": "M4"}},
+        {"id": "T2.a", "label": "Table 2", "kind": "statistical", "quantity": "phi_deg",
+         "value": "3.5", "select": {"method": "M1"}},
+    ],
+    "claims": [
+        {"id": "C1", "label": "Sec. 5", "text": "Method 4 is the worst.",
+         "predicate": {"test": "argmax"}},
+        {"id": "C2", "label": "Abstract", "text": "The error is bounded.",
+         "predicate": {"test": "bounded"}},
+    ],
+    "main_claims": [
+        {"label": "Abstract", "text": "Table 1 is reproduced.", "rows": ["T1."]},
+        {"label": "Sec. 5", "text": "The error is bounded and method 4 is the worst.",
+         "rows": ["C1", "C2/simulated"]},
+    ],
+    "names": {"phi_deg": "roll", "theta_deg": "pitch", "M4": "method 4", "M1": "method 1",
+              "simulated": "the simulated curve"},
+}  # fmt: skip
+
+
+def _write(tmp_path: Path, data: dict) -> Path:
+    path = tmp_path / "demo.yaml"
+    path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
+    return path
+
+
+def _verdicts(**verdicts: str) -> pd.DataFrame:
+    rows = [
+        ("T1.a", "exact", "phi_deg", "M4"),
+        ("T1.b", "exact", "theta_deg", "M4"),
+        ("T2.a", "statistical", "phi_deg", "M1"),
+        ("C1", "claim", "phi_deg", "M1,M4"),
+        ("C2/analytic", "claim", "error_m", "analytic"),
+        ("C2/simulated", "claim", "error_m", "simulated"),
+    ]
+    good = {"exact": "reproduced", "statistical": "consistent", "claim": "upheld"}
+    return pd.DataFrame(
+        [
+            {"id": i, "kind": k, "quantity": q, "method": m, "published": "1",
+             "reproduced": "1", "note": "", "verdict": verdicts.get(i.replace("/", "_").replace(".", "_"), good[k]),
+             "cause_kind": "", "cause": ""}
+            for i, k, q, m in rows
+        ]
+    )  # fmt: skip
+
+
+def test_main_claims_are_validated_with_the_published_file(tmp_path):
+    assert len(load_published(_write(tmp_path, PUBLISHED))["main_claims"]) == 2
+    bad = {**PUBLISHED, "main_claims": [{**PUBLISHED["main_claims"][0], "rows": ["T1.", "T9.x"]}]}
+    with pytest.raises(ConfigError) as err:
+        load_published(_write(tmp_path, bad))
+    message = str(err.value)
+    # the file, the claim, the field and the value
+    assert (
+        "demo.yaml: main claim 'Abstract' (main_claims[0]), field 'rows[1]': bad value 'T9.x'"
+        in message
+    )
+    prefix = {**PUBLISHED, "main_claims": [{**PUBLISHED["main_claims"][0], "rows": ["T7."]}]}
+    with pytest.raises(ConfigError, match=r"field 'rows\[0\]': bad value 'T7\.'"):
+        load_published(_write(tmp_path, prefix))
+    missing = {**PUBLISHED, "main_claims": [{"label": "Abstract", "rows": ["T1."]}]}
+    with pytest.raises(
+        ConfigError, match="main claim 'Abstract'.*field 'text': bad value 'missing'"
+    ):
+        load_published(_write(tmp_path, missing))
+    empty = {**PUBLISHED, "main_claims": [{"label": "x", "text": "y", "rows": []}]}
+    with pytest.raises(ConfigError, match=r"field 'rows'"):
+        load_published(_write(tmp_path, empty))
+
+
+def test_a_main_claims_mark_follows_its_rows():
+    claims = PUBLISHED["main_claims"]
+    v = _verdicts()
+    marks = [r.mark for r in judge_main_claims(claims, list(v["id"]), list(v["verdict"]), "f")]
+    assert marks == ["Re", "Re"]
+    # one row of Table 1 not reproduced: the claim on Table 1 flips; the other does not
+    v = _verdicts(T1_b="not_reproduced")
+    marks = [r.mark for r in judge_main_claims(claims, list(v["id"]), list(v["verdict"]), "f")]
+    assert marks == ["not_Re", "Re"]
+    # a variant the claim does not name changes nothing; the one it names flips it
+    v = _verdicts(C2_analytic="not_upheld")
+    assert judge_main_claims(claims, list(v["id"]), list(v["verdict"]), "f")[1].mark == "Re"
+    v = _verdicts(C2_simulated="not_upheld")
+    assert judge_main_claims(claims, list(v["id"]), list(v["verdict"]), "f")[1].mark == "not_Re"
+    v = _verdicts(C1="not_checkable")
+    assert (
+        judge_main_claims(claims, list(v["id"]), list(v["verdict"]), "f")[1].mark == "not_checkable"
+    )
+    assert mark(["not_checkable", "not_reproduced"]) == "not_Re"
+    with pytest.raises(ValueError, match="f: main claim 'x' .*'rows\\[0\\]': bad value 'C2/nope'"):
+        judge_main_claims(
+            [{"label": "x", "text": "t", "rows": ["C2/nope"]}], ["C2/a"], ["upheld"], "f"
+        )
+
+
+def test_summary_names_rows_in_the_papers_words_grouped_by_cause():
+    audit = pd.DataFrame({"equation": ["1", "2"], "status": ["match", "differs"],
+                          "residual": ["0", "x"], "note": ["", ""], "kind": ["", "paper_error"]})  # fmt: skip
+    v = _verdicts(
+        T1_a="not_reproduced", T1_b="not_reproduced", C1="not_upheld", T2_a="not_reproduced"
+    )
+    # one cause explains three rows (Table 1 and the claim), another none
+    cause = "method 4's formula drops a sign"
+    for i in ("T1.a", "T1.b", "C1"):
+        v.loc[v["id"] == i, ["cause_kind", "cause"]] = ["paper_error", cause]
+    s = paper_summary(v, audit, PUBLISHED, "demo.yaml")
+    reproduced, failed, causes = s.sentences
+    assert reproduced.startswith("Reproduced: 0 of 3 published numbers")
+    assert "1 of 2 printed equations match" in reproduced
+    # group (1): the rows of the ranked first cause, in the paper's labels; (2): the rest
+    assert failed.startswith(
+        "Not reproduced or not upheld (4 verdicts): (1) Table 1, method 4, roll; "
+        "Table 1, method 4, pitch; “Method 4 is the worst” (Sec. 5); (2) Table 2, method 1, roll"
+    )
+    assert "printed equations with an error of the paper: eq. 2" in failed
+    assert causes == (
+        "Causes, by the rows they explain: (1) method 4's formula drops a sign "
+        "[error of the paper; 3 rows]; (2) cause not identified [1 row]."
+    )
+    for internal in ("T1.a", "T2.a", "C1", "phi_deg", "M4"):
+        assert internal not in " ".join(s.sentences)
+    assert s.status == "Not reproduced"  # both main claims fail
+    assert [m.mark for m in s.main_claims] == ["not_Re", "not_Re"]
+    # no cause given at all: said so, once
+    plain = paper_summary(_verdicts(T2_a="not_reproduced"), audit, PUBLISHED, "demo.yaml")
+    assert plain.sentences[2] == "Cause: not identified for the 1 row."
+    assert plain.status == "Full reproduction"  # every main claim holds
+
+
+def test_numbers_at_the_printed_precision_plus_two_digits():
+    # 7 printed decimals + 2: the rounded value; the reason column says "truncated"
+    assert shown_reproduced("exact", "1.0000199", "1.0000199999907") == "1.000020000"
+    assert shown_reproduced("approximate", "2400", "2248.1") == "2248.10"
+    note = "MC 5-95 %: [29.99801, 30.00151]; noise-free real: 29.9995"
+    assert shown_reproduced("statistical", "29.9990", "29.999491", note) == (
+        "29.999491 [29.998010, 30.001510]"
+    )
+    assert reproduced_header(["statistical"]) == "MC median [5-95 %]"
+    assert reproduced_header(["exact", "statistical"]) == "ours, or MC median [5-95 %]"
+    tol = "% error: |ours - printed| <= 1e-09 (an exact inversion: 0 means exact (not 0.5 %))"
+    assert compact_tolerance(tol, "0") == (
+        "% error: |ours - printed| <= 1e-09",
+        "an exact inversion: 0 means exact (not 0.5 %)",
+    )
+
+
+def test_one_vocabulary_and_its_colours():
+    assert plain_words("not_upheld (not_checkable)") == "not upheld (not checkable)"
+    assert tone("differs", "paper_error") == "bad"
+    assert {tone("differs", k) for k in ("text_artefact", "convention", "")} == {"partial"}
+    assert differs_word("convention") == "approximation or convention"
+    import pipeline.columns as columns
+
+    if hasattr(columns, "DIFFERS_KINDS"):  # the audit's kinds all have their words
+        assert {differs_word(k) for k in columns.DIFFERS_KINDS} <= {
+            "error of the paper", "artefact of the text", "approximation or convention"
+        }  # fmt: skip
+
+
+@pytest.mark.parametrize("slug", ["north_finding", "platform_drift", "altimeter_attitude"])
+def test_every_paper_lists_main_claims_that_name_its_rows(slug):
+    """2-4 main claims per paper, each a sentence, validated with the file."""
+    data = load_published(ROOT / "config" / "published" / f"{slug}.yaml")
+    claims = data["main_claims"]
+    assert 2 <= len(claims) <= 4
+    assert all(c["text"].endswith(".") for c in claims)
