@@ -140,11 +140,17 @@ _LONG_TOKEN = re.compile(r"\S{16,}")
 def breakable(text: str) -> str:
     """``text`` as escaped markup in which a long token with letters (a path, a hash, a dotted
     name) may break across lines: after ``/ _ . = : , -`` and every 16 characters, between
-    boxes (no character is added to the text). Numbers stay whole."""
+    boxes (no character is added to the text, none is lost). Numbers stay whole.
+
+    >>> print(breakable("sweep of x, initial_error_deg_of_roll (20 runs)"))
+    sweep of x, #box[initial\\_]#box[error\\_]#box[deg\\_]#box[of\\_]#box[roll] (20 runs)
+    """
     out, pos = [], 0
     text = " ".join(str(text).split())
     for m in _LONG_TOKEN.finditer(text):
-        out.append(escape(text[pos : m.start()]) if pos < m.start() else "")
+        # the text between tokens keeps its spaces: a box directly followed by "(" or "["
+        # would be read as a function call
+        out.append(_escape_chars(text[pos : m.start()]))
         token = m.group(0)
         if not re.search(r"[A-Za-z]", token):
             out.append(escape(token))
@@ -153,8 +159,12 @@ def breakable(text: str) -> str:
             chunks = [c for p in parts for c in re.findall(r".{1,16}", p)]
             out.append("".join(f"#box[{escape(c)}]" for c in chunks if c))
         pos = m.end()
-    out.append(escape(text[pos:]) if pos < len(text) else "")
+    out.append(_escape_chars(text[pos:]))
     return "".join(out)
+
+
+def _escape_chars(text: str) -> str:
+    return "".join("\\" + c if c in _ESCAPED else c for c in text)
 
 
 def label_name(section_id: str) -> str:

@@ -1,13 +1,12 @@
 # Snakemake script: fail if a generated module differs from what its derivations generate.
 # params.generator: the module with source(), derivations.<slug>.generate
 import importlib
-import sys
 from pathlib import Path
 
 from pipeline.atomic import write_text
+from pipeline.script_log import logged
 
-with open(snakemake.log[0], "w") as log:  # noqa: F821
-    sys.stderr = log
+with logged(snakemake.log[0]):  # noqa: F821
     generator = importlib.import_module(snakemake.params.generator)  # noqa: F821
     generated = Path(snakemake.input.generated)  # noqa: F821
     if generated.read_text(encoding="utf-8") != generator.source():

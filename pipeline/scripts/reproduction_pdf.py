@@ -1,15 +1,13 @@
 # Snakemake script: the combined reproduction report as a PDF, reports/reproduction.pdf
 # (Typst via the typst package; the same document as reports/reproduction.html).
-import contextlib
-import sys
 import time
 from pathlib import Path
 
 from pipeline.report.document import build_document
 from pipeline.report.reproduction_pdf import write_pdf
+from pipeline.script_log import logged
 
-with open(snakemake.log[0], "w") as log, contextlib.redirect_stdout(log):  # noqa: F821
-    sys.stderr = log
+with logged(snakemake.log[0]):  # noqa: F821
     t0 = time.perf_counter()
     root = Path.cwd()
     doc = build_document(

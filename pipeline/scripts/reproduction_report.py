@@ -1,13 +1,12 @@
 # Snakemake script: the combined reproduction report, reports/reproduction.html.
-import sys
 import time
 from pathlib import Path
 
 from pipeline.report.document import build_document
 from pipeline.report.reproduction_html import write_html
+from pipeline.script_log import logged
 
-with open(snakemake.log[0], "w") as log:  # noqa: F821
-    sys.stderr = log
+with logged(snakemake.log[0]):  # noqa: F821
     t0 = time.perf_counter()
     doc = build_document(
         root=Path.cwd(),
@@ -17,5 +16,5 @@ with open(snakemake.log[0], "w") as log:  # noqa: F821
     )
     out = write_html(doc, snakemake.output[0])  # noqa: F821
     for row in doc.scoreboard:
-        print(f"{row.slug}: {row.line}", file=log)
-    print(f"wrote {out} ({out.stat().st_size} bytes) in {time.perf_counter() - t0:.1f} s", file=log)
+        print(f"{row.slug}: {row.line}")
+    print(f"wrote {out} ({out.stat().st_size} bytes) in {time.perf_counter() - t0:.1f} s")

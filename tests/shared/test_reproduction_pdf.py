@@ -446,3 +446,18 @@ def test_nothing_runs_off_the_text_area(report, tmp_path, _):
             if float(m.group(1)) < inset or float(m.group(2)) > width - inset:
                 off.append((n, m.group(3)))
     assert off == [], off[:10]
+
+
+def test_breakable_text_keeps_its_spaces_and_compiles(tmp_path):
+    """A long token followed by ' (' stays markup: the space survives (else Typst reads the
+    token's last box as a function called with the parenthesis, "expected comma")."""
+    import typst
+
+    from pipeline.report.typst_source import breakable
+
+    text = "over the sweep of imu_rate_hz, intensity, initial_error_deg (20 runs a point) [x]"
+    src = breakable(text)
+    assert "#box[deg] (20" in src and "intensity, #box" in src
+    page = tmp_path / "a.typ"
+    page.write_text(f"#table(columns: 1, [{src}])", encoding="utf-8")
+    assert typst.compile(str(page))[:4] == b"%PDF"
