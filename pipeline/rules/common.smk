@@ -4,7 +4,6 @@ import os
 import sys
 from pathlib import Path
 
-
 # Scripts import `derivations` and `pipeline` from the repository root: the workflow puts the
 # root on the PYTHONPATH of its jobs (set here for them; nothing is required from the caller).
 os.environ.update(
@@ -45,7 +44,6 @@ ENV = "../envs/inertial-repro.yaml"
 # Captions of the outputs tagged for `snakemake --report` (reStructuredText, Jinja-templated).
 CAPTIONS = "../../reports/snakemake"
 SCRIPTS = "pipeline/scripts"
-
 
 
 def code(*modules, script=None):
