@@ -88,8 +88,9 @@ def quoted(value: Any) -> str:
     return text if len(text) <= MAX_QUOTED else text[: MAX_QUOTED - 3] + "..."
 
 
-def check_values(data: Any, source: str | Path) -> None:
-    """Refuse non-finite numbers (naming each field) and documents over :data:`MAX_VALUES`."""
+def check_values(data: Any, source: str | Path, finite: bool = True) -> None:
+    """Refuse documents over :data:`MAX_VALUES` and (``finite``) non-finite numbers, naming
+    each field."""
     problems: list[str] = []
     count = 0
     stack: list[tuple[str, Any]] = [("", data)]
@@ -105,7 +106,7 @@ def check_values(data: Any, source: str | Path) -> None:
             stack += [(f"{where}.{k}" if where else str(k), v) for k, v in node.items()]
         elif isinstance(node, list):
             stack += [(f"{where}.{i}" if where else str(i), v) for i, v in enumerate(node)]
-        elif isinstance(node, float) and not math.isfinite(node):
+        elif finite and isinstance(node, float) and not math.isfinite(node):
             problems.append(
                 f"{source}: {where or '(top level)'} = {node}: not a finite number; "
                 "allowed: finite numbers only"
@@ -114,8 +115,9 @@ def check_values(data: Any, source: str | Path) -> None:
         raise ConfigError("\n".join(sorted(problems)))
 
 
-def load_text(text: str, source: str | Path) -> Any:
-    """Parse YAML ``text`` read from ``source`` strictly (see the module docstring)."""
+def load_text(text: str, source: str | Path, finite: bool = True) -> Any:
+    """Parse YAML ``text`` read from ``source`` strictly (see the module docstring);
+    ``finite=False`` leaves non-finite numbers to a caller that names them better."""
     loader = _StrictLoader(text)
     loader.name = str(source)
     try:
@@ -130,12 +132,13 @@ def load_text(text: str, source: str | Path) -> Any:
         ) from None
     finally:
         loader.dispose()
-    check_values(data, source)
+    check_values(data, source, finite)
     return data
 
 
-def load_yaml(path: str | Path) -> Any:
-    """Parse a YAML file strictly, turning every problem into :class:`ConfigError`."""
+def load_yaml(path: str | Path, finite: bool = True) -> Any:
+    """Parse a YAML file strictly, turning every problem into :class:`ConfigError`
+    (``finite``: see :func:`load_text`)."""
     path = Path(path)
     if not path.is_file():
         raise ConfigError(f"{path}: file not found")
@@ -152,7 +155,7 @@ def load_yaml(path: str | Path) -> Any:
         ) from None
     if "\x00" in text:
         raise ConfigError(f"{path}: contains NUL bytes (a binary file?); allowed: a YAML text file")
-    return load_text(text, path)
+    return load_text(text, path, finite)
 
 
 def inside_repository(value: str, field: str, source: str | Path, root: Path) -> Path:

@@ -48,12 +48,14 @@ def validate_workflow_config(
     if not isinstance(papers, list):  # the schema names the type wanted
         validate(config, load_schema("config"), source)
     listed = [p for p in papers if isinstance(p, str)] if isinstance(papers, list) else []
-    known = ["papers", "results_dir", "reports_dir", *listed]
+    # the settings of a paper not listed may stay in the file (papers: [x] runs x only)
+    plugins = sorted(p.parent.name for p in (root / "pipeline").glob("*/paper.py"))
+    known = ["papers", "results_dir", "reports_dir", *listed, *plugins]
     unknown = sorted(str(k) for k in config if k not in known)
     if unknown:
         raise ConfigError(
             f"{source}: {unknown[0]}: unknown key; allowed keys: papers, results_dir, reports_dir "
-            f"and the settings of a listed paper ({listed})"
+            f"and the settings of a paper plug-in ({plugins})"
         )
     validate(config, load_schema("config"), source)
     for field in ("results_dir", "reports_dir"):

@@ -28,7 +28,7 @@ __all__ = [
 
 #: Status and verdict words counted on the scoreboard (every word shown, zeros included).
 AUDIT_WORDS = ("match", "differs", "not_checkable")
-NUMBER_WORDS = ("reproduced", "consistent", "not_reproduced")
+NUMBER_WORDS = ("reproduced", "consistent", "not_reproduced", "not_checkable")
 CLAIM_WORDS = ("upheld", "not_upheld", "not_checkable")
 
 

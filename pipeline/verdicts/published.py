@@ -250,7 +250,7 @@ def load_published(
     is checked (enough for a reader that wants the items' ids, labels and printed values).
     Raises :class:`ConfigError` listing every problem.
     """
-    data = load_yaml(path)
+    data = load_yaml(path, finite=False)  # non-finite values: named per item below
     problems = check_published(data, str(path), claims=claims, check_item=check_item)
     if problems:
         raise ConfigError(f"{path}: {len(problems)} problem(s):\n" + "\n".join(problems))
