@@ -78,24 +78,27 @@ def loglog_slope(t: np.ndarray, y: np.ndarray) -> float:
 
 
 def crossover(strapdown: pd.Series, proposed: pd.Series, from_s: float = CROSS_FROM_S) -> float:
-    """First t >= from_s at which strapdown > proposed (linear interpolation); NaN if never.
-
-    A 1 m margin: where the curves coincide (to integration precision) there is no crossover.
+    """The time the strapdown curve, first below the proposed one, rises above it: the first
+    t >= from_s after the strapdown was below by more than a 1 m margin at which it is above
+    by more than the margin (linear interpolation); NaN if the strapdown is never below (a
+    crossover needs one curve below the other first: curves that start together and part
+    later do not cross) or never rises above.
 
     >>> t = np.arange(0.0, 1001.0, 100.0)
     >>> crossover(pd.Series(t, index=t), pd.Series(np.full_like(t, 499.0), index=t))
     500.0
+    >>> crossover(pd.Series(t, index=t), pd.Series(t - 0.5 * t * (t > 300), index=t))
+    nan
     """
     t = strapdown.index.to_numpy(float)
-    d = (
-        strapdown.to_numpy(float)
-        - proposed.reindex(strapdown.index).to_numpy(float)
-        - CROSS_MARGIN_M
-    )
+    diff = strapdown.to_numpy(float) - proposed.reindex(strapdown.index).to_numpy(float)
     keep = t >= from_s
-    t, d = t[keep], d[keep]
-    if d.size == 0 or d[0] > 0:
-        return float("nan") if d.size == 0 else float(t[0])
+    t, diff = t[keep], diff[keep]
+    below = np.flatnonzero(diff < -CROSS_MARGIN_M)
+    if below.size == 0:
+        return float("nan")
+    t, diff = t[below[0] :], diff[below[0] :]
+    d = diff - CROSS_MARGIN_M
     idx = np.flatnonzero(d > 0)
     if idx.size == 0:
         return float("nan")

@@ -57,7 +57,6 @@ from pipeline.platform_drift.trajectory import haversine
 __all__ = [
     "ERRORS_COLUMNS",
     "CROSSOVER_AFTER_S",
-    "CROSSOVER_MARGIN_M",
     "SUMMARY_COLUMNS",
     "SCHEMES",
     "DIAGNOSTIC_SCHEME",
@@ -73,9 +72,6 @@ SUMMARY_COLUMNS = DRIFT_SUMMARY_COLUMNS
 SCHEMES = ("proposed_simulated", "proposed_analytic", "strapdown")
 DIAGNOSTIC_SCHEME = "proposed_true_azimuth"
 CROSSOVER_AFTER_S = 300.0
-# "exceeds" means by more than this: far above the no-drift floors (< 0.1 mm) so that
-# numerical noise between two coinciding curves does not count as a crossover
-CROSSOVER_MARGIN_M = 1.0
 SCENARIO_DIR = ROOT / "config" / "scenarios" / "platform_drift"
 RESULTS_DIR = ROOT / "results" / "platform_drift"
 GENERATED = ROOT / "pipeline" / "generated" / "platform_drift.py"
@@ -138,9 +134,11 @@ def simulate_errors(
 
 
 def crossover(t: np.ndarray, strap: np.ndarray, other: np.ndarray) -> float:
-    """First time t >= 300 s at which ``strap`` exceeds ``other`` by more than 1 m; NaN if never."""
-    idx = np.flatnonzero((t >= CROSSOVER_AFTER_S) & (strap > other + CROSSOVER_MARGIN_M))
-    return float(t[idx[0]]) if idx.size else float("nan")
+    """The crossover of ``strap`` above ``other``: the one rule of the verdicts
+    (:func:`pipeline.platform_drift.curves.crossover`), so the summary and the verdicts agree."""
+    from pipeline.platform_drift.curves import crossover as cross
+
+    return cross(pd.Series(strap, index=t), pd.Series(other, index=t), CROSSOVER_AFTER_S)
 
 
 def summary_frame(errors: pd.DataFrame, diagnostic: pd.DataFrame) -> pd.DataFrame:

@@ -199,10 +199,13 @@ def test_summary_consistent(results):
 def test_crossover_rule():
     t = np.arange(0.0, 1000.0, 10.0)
     other = np.full_like(t, 100.0)
-    strap = t / 5.0  # exceeds 100 + 1 m after t = 505
-    assert crossover(t, strap, other) == 510.0
+    strap = t / 5.0  # below until 500 s, exceeds 100 + 1 m at t = 505 s (interpolated)
+    assert crossover(t, strap, other) == 505.0
     assert math.isnan(crossover(t, other, other))  # equal curves never cross
-    assert crossover(t, other + 5.0, other) == 300.0  # above from the start: first t >= 300 s
+    # above from the start: never below, so no crossover (the summary and the verdicts agree)
+    assert math.isnan(crossover(t, other + 5.0, other))
+    # starting together and parting later is not a crossover either
+    assert math.isnan(crossover(t, other + 0.01 * t, other))
 
 
 # --------------------------------------------------------------------------------------------

@@ -195,11 +195,21 @@ def test_close_and_below():
     out = verdicts(_published(claims), _at_rest(errors)).set_index("id")
     assert out.loc["B/proposed_analytic", "verdict"] == "upheld"
     assert "smallest margin" in out.loc["B/proposed_analytic", "reproduced"]
-    # below by less than the margin everywhere: equal within the resolution, not "better"
+    # below by less than the margin everywhere: tied within the resolution, not "better"
     errors.loc[errors["scheme"] == "proposed_analytic", "error_m"] = (100 + T) - 0.5
     out = verdicts(_published(claims), _at_rest(errors)).set_index("id")
     assert out.loc["B/proposed_analytic", "verdict"] == "not_upheld"
-    assert "by more than 1 m" in out.loc["B/proposed_analytic", "reproduced"]
+    assert "tied with the reference" in out.loc["B/proposed_analytic", "reproduced"]
+    # tied at first (2 m both), below by more than the margin later: below for the whole run
+    strap = errors.loc[errors["scheme"] == "strapdown", "error_m"].to_numpy()
+    errors.loc[errors["scheme"] == "proposed_analytic", "error_m"] = strap - 1e-3 * T
+    out = verdicts(_published(claims), _at_rest(errors)).set_index("id")
+    assert out.loc["B/proposed_analytic", "verdict"] == "upheld"
+    # above by more than the margin anywhere: not below
+    errors.loc[errors["scheme"] == "proposed_analytic", "error_m"] = strap + 5.0 * (T < 1000)
+    out = verdicts(_published(claims), _at_rest(errors)).set_index("id")
+    assert out.loc["B/proposed_analytic", "verdict"] == "not_upheld"
+    assert "above the reference by more than 1 m" in out.loc["B/proposed_analytic", "reproduced"]
 
 
 def test_close_to_an_oscillating_reference_relative_to_its_max():
