@@ -101,14 +101,20 @@ def _summary(results: list[ClaimResult], sets: list[RankSet]) -> list[ClaimResul
     """Append to every row's reason at which N the claim holds and at which it does not."""
     held = [s.label for r, s in zip(results, sets, strict=True) if r.verdict == "upheld"]
     failed = [s.label for r, s in zip(results, sets, strict=True) if r.verdict == "not_upheld"]
+    open_ = [s.label for r, s in zip(results, sets, strict=True) if r.verdict == "not_checkable"]
     if len(sets) < 2:
         return results
-    if not failed:
+    if not failed and not open_:
         text = f"holds at every N judged ({', '.join(held)})"
-    elif not held:
+    elif not held and not open_:
         text = f"holds at none of the N judged ({', '.join(failed)})"
     else:
-        text = f"holds at N = {', '.join(held)}; not at N = {', '.join(failed)}"
+        parts = [
+            f"holds at N = {', '.join(held)}" if held else "",
+            f"not at N = {', '.join(failed)}" if failed else "",
+            f"not resolved at N = {', '.join(open_)}" if open_ else "",
+        ]
+        text = "; ".join(p for p in parts if p)
     return [replace(r, reason=f"{r.reason}; {text}") for r in results]
 
 
@@ -136,25 +142,32 @@ def _arg_one(kind: str, args: Mapping[str, Any], rank_set: RankSet, results: Any
     stat = "|error|" if rank_set.noise_free else "rms"
     reproduced = sep.join(f"{m} ({stat} {rms[m]:.4g} %)" for m in ordered)
     comps = [rank_set.compare(quantity, expect, m) for m in methods if m != expect]
-    # a rival matches or beats the expected method: the same estimator, or not separated,
-    # or separated on the wrong side
-    rivals = [c for c in comps if c.identical or not c.separated or sign * c.d > 0]
+    # refuted: a rival is the same estimator, or is separated on the wrong side; unresolved: a
+    # rival the Monte Carlo cannot tell from the expected method (more trials would decide,
+    # so the claim is not checkable at this N rather than refuted)
+    refuting = [c for c in comps if c.identical or (c.separated and sign * c.d > 0)]
+    unresolved = [c for c in comps if not c.identical and not c.separated]
     identical = [c.b for c in comps if c.identical]
     how = "smaller" if kind == "argmin" else "larger"
-    if rivals:
-        worst = max(rivals, key=lambda c: (c.identical, sign * c.d))
-        note = (
-            f"{worst.b} {how} than {expect}"
-            if worst.separated
-            else f"{expect} not distinguishably {how} than {worst.b} ({worst.describe()})"
-        )
-        if worst.identical:
-            note = worst.describe()
+    if refuting:
+        worst = max(refuting, key=lambda c: (c.identical, sign * c.d))
+        note = worst.describe() if worst.identical else f"{worst.b} {how} than {expect}"
         reason = f"{kind} of the RMS % error ({rank_set.where}) is not {expect} alone: {note}"
-        cause = causes.for_ranking(quantity, expect, [c.b for c in rivals], identical, results)
+        cause = causes.for_ranking(quantity, expect, [c.b for c in refuting], identical, results)
         return ClaimResult(
             "not_upheld", reproduced, _tolerance(rank_set), reason, suffix=rank_set.suffix,
             notes=(note,), cause=cause, **base,
+        )  # fmt: skip
+    if unresolved:
+        worst = min(unresolved, key=lambda c: abs(c.z))
+        note = f"{expect} not distinguishably {how} than {worst.b} ({worst.describe()})"
+        reason = (
+            f"not resolved at {rank_set.where}: {note}; no rival is separated from {expect} on "
+            "the wrong side, so more trials (or another N) decide"
+        )
+        return ClaimResult(
+            "not_checkable", reproduced, _tolerance(rank_set), reason, suffix=rank_set.suffix,
+            notes=(note,), **base,
         )  # fmt: skip
     closest = min(comps, key=lambda c: abs(c.z))
     reason = (
