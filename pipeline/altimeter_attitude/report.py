@@ -131,7 +131,8 @@ CAUSE = ("cause_kind", "cause")
 
 
 def _verdicts(verdicts: pd.DataFrame) -> Section:
-    shown = verdicts.drop(columns=[c for c in ("cause",) if c in verdicts.columns])
+    # the cause's title stays; its full text is in the Summary's list of causes
+    shown = verdicts.drop(columns=[c for c in ("cause_detail",) if c in verdicts.columns])
     values = shown[shown["kind"] != "claim"]
     claims = shown[shown["kind"] == "claim"]
     intro = Paragraph(
@@ -142,8 +143,8 @@ def _verdicts(verdicts: pd.DataFrame) -> Section:
         "results; the reproduced column is its computed evidence. The sigma-consistency claims "
         "have one row per angle: NEES above the chi-square band means the filter's sigma is "
         "too small (over-confident), below it too large (under-confident). The cause_kind "
-        "column gives the kind of a failing row's root cause (the Summary states each cause "
-        "once, with its rows); 'unpublished' means it cannot be reproduced from what the paper "
+        "and cause columns give the kind and title of a failing row's root cause (the Summary "
+        "states each cause once, in full, with its rows); 'unpublished' means it cannot be reproduced from what the paper "
         "publishes, which does not refute it."
     )
     return Section(

@@ -112,7 +112,8 @@ def test_argmin_is_judged_at_every_n_and_says_where_it_holds() -> None:
     assert all(r.endswith("holds at N = 1e6, noise-free; not at N = 100") for r in t["reason"])
     # the failing row is explained by the unpublished N, with the evidence of each failing N
     assert t.loc["C.x/N=100", "cause_kind"] == "unpublished"
-    assert "does not give the averaging count N" in t.loc["C.x/N=100", "cause"]
+    assert t.loc["C.x/N=100", "cause"] == "the averaging count N is not given"
+    assert "does not give the averaging count N" in t.loc["C.x/N=100", "cause_detail"]
     assert t.loc["C.x/N=1e6", "cause"] == ""
     # a wrong expectation fails everywhere
     wrong = table(TWO_N, [claim("argmin", "A4", ["A1c1", "A4"])])
@@ -140,9 +141,10 @@ def test_identical_estimators_tie_at_every_n() -> None:
     assert "A5 identical to A4 on every trial" in t.loc["C.x/N=100", "reason"]
     assert "A5 identical to A4 noise-free" in t.loc["C.x/noise-free", "reason"]
     # one cause for both rows: the two methods are one estimator (they read the same positions)
-    assert t["cause_kind"].tolist() == ["paper_error"] * 2 and t["cause"].nunique() == 1
+    assert t["cause_kind"].tolist() == ["paper_error"] * 2 and t["cause_detail"].nunique() == 1
+    assert set(t["cause"]) == {"azimuth methods 4 and 5 are one estimator"}
     assert (
-        "methods 4 and 5 solve the same gyro readings (tau = 0, 90, 180 deg)" in t["cause"].iloc[0]
+        "methods 4 and 5 solve the same gyro readings (tau = 0, 90, 180 deg)" in t["cause_detail"].iloc[0]
     )
 
 
