@@ -40,7 +40,11 @@ from pipeline.altimeter_attitude.report_findings import (
     fmt3,
     sweep_table,
 )
-from pipeline.altimeter_attitude.report_summary import steady_blocks, summary_blocks
+from pipeline.altimeter_attitude.report_summary import (
+    headline_blocks,
+    steady_blocks,
+    summary_blocks,
+)
 from pipeline.altimeter_attitude.scenario import load_scenario
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
@@ -163,8 +167,10 @@ def _results(
     descriptions: Mapping[str, str],
     published: str,
     windows: Mapping[str, pd.DataFrame] | None = None,
+    headline: Sequence[Block] = (),
 ) -> Section:
     blocks: list[Block] = [
+        *headline,
         Paragraph(
             "rms_summary.csv per scenario: RMS over runs and over time after the transient; "
             "sigma: RMS of the filter's own standard deviation; NEES: mean of error^2 / sigma^2 "
@@ -347,7 +353,13 @@ def report(inputs: ReportInputs) -> PaperReport:
         ),
         Section("equation-audit", "Equation audit", _audit(audit, inputs.shown(audit_path))),
         _verdicts(verdicts),
-        _results(sums, descriptions, published_scenario, windows),
+        _results(
+            sums,
+            descriptions,
+            published_scenario,
+            windows,
+            headline_blocks(verdicts, sums, published_scenario, windows),
+        ),
         _figures(inputs.figures, sweep),
         findings_section(sums, sweep, noise_free),
         _assumptions(files, inputs.shown),

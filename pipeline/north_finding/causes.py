@@ -234,7 +234,7 @@ def _azimuth_method2(results: Mapping[str, Any]) -> Cause | None:
         f"reach it only at N <= {_g(n)}, where the paper's other {item['label']} rows would lie "
         f"as close to their noise-free values as printed with probability {p:.0e}"
     )
-    return Cause("unpublished", "no table angle gives azimuth method 2's printed row", text)
+    return Cause("unpublished", "no table angle gives azimuth method 2's row", text)
 
 
 def same_estimator(results: Mapping[str, Any], quantity: str, a: str, b: str) -> Cause | None:
@@ -303,9 +303,7 @@ def _ls_positions(results: Mapping[str, Any]) -> Cause | None:
         f"dominates its RMS error is {min(ratios):.2f} to {max(ratios):.2f} of theirs "
         f"({s0.where})"
     )
-    return Cause(
-        "unpublished", "least-squares levelling positions (methods 2 and 4) are not given", text
-    )
+    return Cause("unpublished", "least-squares levelling positions are not given", text)
 
 
 def acc_bias_misalignment(results: Mapping[str, Any]) -> Cause | None:
@@ -336,7 +334,7 @@ def _acc_bias(results: Mapping[str, Any]) -> Cause | None:
         f"the paper's {paper:+.1f} % ({item['label']}: {item['value']} ug) would need "
         f"{need:+.1f} arcsec"
     )
-    return Cause("unpublished", "the accelerometer misalignment terms are not given", text)
+    return Cause("unpublished", "accelerometer misalignment terms are not given", text)
 
 
 # --------------------------------------------------------------------------- which cause

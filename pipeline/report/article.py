@@ -50,8 +50,7 @@ def abstract(papers: Sequence[PaperParts]) -> str:
         + (f"{n_err} of them errors of the paper" if n_classified else "not yet classified by kind")
         + "), "
         f"{n_good} of {n_num} published numbers are reproduced and {n_upheld} of "
-        f"{plural(n_claim, 'claim verdict')} are upheld. Each paper's main claims and what "
-        "was and was not reproduced follow."
+        f"{plural(n_claim, 'claim verdict')} are upheld."
     )
 
 

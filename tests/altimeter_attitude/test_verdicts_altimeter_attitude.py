@@ -198,9 +198,7 @@ def test_unpublished_cause_is_shared_and_computed(published, tmp_path):
     frame = judge(published, d, 10.0)
     failing = frame[frame["verdict"] == "not_reproduced"]
     assert len(failing) == 8 and failing["cause_detail"].nunique() == 1
-    assert set(failing["cause"]) == {
-        "trajectory, sample rates, tuning and RMS reduction are not published"
-    }
+    assert set(failing["cause"]) == {"trajectory, rates, tuning and RMS metric are not given"}
     text = failing["cause_detail"].iloc[0]
     assert "trajectory" in text and "sample rates" in text and "does not refute" in text
     # the window moves linear_kf roll by 0.9 - 0.4 = 0.5 deg; the largest of the four
@@ -228,7 +226,10 @@ def test_claims_on_synthetic_results(published, tmp_path):
     assert v["C6.leveling_fails"] == "upheld"  # 30 deg vs 0.16 under load
     assert v["C7.ekf_diverges"] == "not_upheld"
     assert v["C8.gamma_term_needed"] == "not_upheld"  # identical curves
-    assert "ends the flight at 1.00 times" in frame.set_index("id").at["C7.ekf_diverges", "cause_detail"]
+    assert (
+        "ends the flight at 1.00 times"
+        in frame.set_index("id").at["C7.ekf_diverges", "cause_detail"]
+    )
 
 
 def test_claims_flip_with_the_data(published, tmp_path):

@@ -144,7 +144,8 @@ def test_identical_estimators_tie_at_every_n() -> None:
     assert t["cause_kind"].tolist() == ["paper_error"] * 2 and t["cause_detail"].nunique() == 1
     assert set(t["cause"]) == {"azimuth methods 4 and 5 are one estimator"}
     assert (
-        "methods 4 and 5 solve the same gyro readings (tau = 0, 90, 180 deg)" in t["cause_detail"].iloc[0]
+        "methods 4 and 5 solve the same gyro readings (tau = 0, 90, 180 deg)"
+        in t["cause_detail"].iloc[0]
     )
 
 
