@@ -97,11 +97,15 @@ def _note(row: pd.Series) -> str:
     return "; ".join(p for p in (str(row["note"]), f"cause: {detail}" if detail else "") if p)
 
 
-def _per_suffix(rows: pd.DataFrame, values: list[str], names: RowNames) -> str:
+def _per_suffix(
+    rows: pd.DataFrame, values: list[str], names: RowNames, partial: bool = False
+) -> str:
     """One value for the rows that have one, or each with its suffix in words when they
-    differ (a row without a value, e.g. not checkable, is left out)."""
+    differ (a row without a value, e.g. not checkable, is left out; ``partial``: named by
+    its suffix also when it is the only one of several with a value)."""
     kept = [(split_id(i)[1], v) for i, v in zip(rows["id"], values, strict=True) if v.strip()]
-    if len({v for _, v in kept}) <= 1:
+    named = partial and len(rows) > 1 and len(kept) < len(rows)
+    if len({v for _, v in kept}) <= 1 and not named:
         return kept[0][1] if kept else ""
     return "; ".join(f"{names.words(sfx)}: {v}" for sfx, v in kept)
 
@@ -164,8 +168,9 @@ def published_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Sect
             "the paper's table or figure."
         )
     ]
-    with_cause = bool(_col(n.numbers, "cause").str.strip().any())
+    said: set[str] = set()  # a tolerance's reason once, below the first table it applies to
     for label, rows in n.tables():
+        with_cause = bool(_col(rows, "cause").str.strip().any())  # a cause column where one fails
         cells, reasons, highlight, status = [], [], [], []
         for k, g in enumerate(group_rows(rows)):
             first = g.iloc[0].copy()
@@ -176,14 +181,14 @@ def published_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Sect
                 tol, why = compact_tolerance(str(r.get("tolerance", "")), str(r["published"]))
                 judged = str(r["reproduced"]).strip() != ""  # a tolerance that was applied
                 tols.append(tol if judged else "")
-                if why and judged and why not in reasons:
+                if why and judged and why not in reasons and why not in said:
                     reasons.append(why)
             verdicts_ = [str(v) for v in g["verdict"]]
             pairs = [(n.names.words(split_id(i)[1]), v) for i, v in zip(g["id"], verdicts_, strict=True)]  # fmt: skip
             row = [
                 n.what(first, label, variant=len(g) == 1),
                 _per_suffix(g, [str(v) for v in g["published"]], n.names),
-                _per_suffix(g, [n.ours(r) for _, r in g.iterrows()], n.names),
+                _per_suffix(g, [n.ours(r) for _, r in g.iterrows()], n.names, partial=True),
                 _per_suffix(g, tols, n.names),
                 describe(pairs),
             ]
@@ -197,6 +202,7 @@ def published_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Sect
         blocks.append(Table(columns, cells, caption, highlight, status))
         if reasons:
             blocks.append(Paragraph("Tolerance: " + "; ".join(reasons) + "."))
+            said.update(reasons)
     return Section(sid, "Published numbers", blocks)
 
 
@@ -211,8 +217,8 @@ def published_rows_section(sid: str, verdicts: pd.DataFrame, published: Path) ->
             "adds each row's note)."
         )
     ]
-    with_cause = bool(_col(n.numbers, "cause").str.strip().any())
     for label, rows in n.tables():
+        with_cause = bool(_col(rows, "cause").str.strip().any())  # a cause column where one fails
         cells, highlight, status, notes = [], [], [], []
         for k, (_, r) in enumerate(rows.iterrows()):
             tol, _ = compact_tolerance(str(r.get("tolerance", "")), str(r["published"]))

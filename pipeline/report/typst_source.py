@@ -208,7 +208,8 @@ def column_widths(columns: list[str], rows: list[list[str]], budget: int) -> str
         lengths = sorted(len(c) for c in cells) or [0]
         words = [len(w) for c in [*cells, columns[j]] for w in c.split()] or [0]
         longest.append(max(lengths[-1], max(words)))
-        typical = lengths[int(0.8 * (len(lengths) - 1))]
+        # (rounded: in a table of two or three rows the longest cell is the typical one)
+        typical = lengths[round(0.8 * (len(lengths) - 1))]
         # one very long cell (e.g. a JSON value among short ones) also earns some width
         weight.append(min(max(typical, lengths[-1] // 8, min(max(words), 18), 10), 70))
     auto = {j for j in range(ncol) if longest[j] <= 26}
