@@ -85,9 +85,9 @@ def introduction(papers: Sequence[PaperParts], appendix_names: Sequence[str]) ->
             "judged by a named test. A printed equation that differs is an "
             + ", an ".join(DIFFERS_WORDS.values())
             + "; only an error of the paper is shown in red. A failing verdict names its root "
-            "cause where one is identified, by a short title; its kind is "
+            "cause where one is identified, by a short title; its kind is one of: "
             + "; ".join(
-                w if CAUSE_SHORT_WORDS.get(k, w) == w else f"{CAUSE_SHORT_WORDS[k]} ({w})"
+                w if CAUSE_SHORT_WORDS.get(k, w) == w else f"{CAUSE_SHORT_WORDS[k]}, that is {w}"
                 for k, w in CAUSE_WORDS.items()
             )
             + ". The front page counts the rows each cause explains; each paper's summary gives "
