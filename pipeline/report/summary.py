@@ -84,12 +84,14 @@ def _reproduced(verdicts: pd.DataFrame, audit: pd.DataFrame) -> str:
     if len(audit):
         n_match = int((audit["status"] == "match").sum())
         text += f"; {n_match} of {plural(len(audit), 'printed equation')} match the derivation"
+        if "kind" in audit.columns:
+            errors = int(((audit["status"] == "differs") & (audit["kind"] == "paper_error")).sum())
+            are = "is an error" if errors == 1 else "are errors"
+            text += f" ({errors} of the others {are} of the paper)" if errors else ""
     return text + "."
 
 
-def _not_reproduced(
-    lines: Sequence[CauseLine], unchecked: pd.DataFrame, audit: pd.DataFrame
-) -> str:
+def _not_reproduced(lines: Sequence[CauseLine], unchecked: pd.DataFrame) -> str:
     numbered = len(lines) > 1
     parts = [f"({k}) {c.labels}" if numbered else c.labels for k, c in enumerate(lines, 1)]
     n = sum(c.rows for c in lines)
@@ -100,10 +102,6 @@ def _not_reproduced(
     )
     if len(unchecked):
         text += f"; {plural(len(unchecked), 'verdict')} not checkable"
-    if "kind" in audit.columns:
-        errors = audit[(audit["status"] == "differs") & (audit["kind"] == "paper_error")]
-        if len(errors):
-            text += f"; {plural(len(errors), 'printed equation')} with an error of the paper"
     return text + "."
 
 
@@ -139,7 +137,7 @@ def paper_summary(
     status = status_of([r.mark for r in results], [str(v) for v in verdicts["verdict"]])
     sentences = (
         _reproduced(verdicts, audit),
-        _not_reproduced(lines, unchecked, audit),
+        _not_reproduced(lines, unchecked),
         causes_sentence(lines),
     )
     return PaperSummary(status, sentences, marks, tuple(lines))

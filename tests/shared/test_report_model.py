@@ -193,7 +193,7 @@ def test_page_follows_the_template(inputs, tmp_path):
     # the main claims, marked from the verdict rows; the three sentences in the paper's words
     assert '<span class="mark m-not-re">[¬Re]</span> The small-angle period formula holds.' in text
     assert '<span class="mark m-re">[Re]</span> Mass does not matter.' in text
-    assert "Not reproduced or not upheld (1 verdict): Table 1, the second pendulum;" in text
+    assert "Not reproduced or not upheld (1 verdict): Table 1, the second pendulum." in text
     assert "T1.b" not in _text(text)  # no internal id
     assert "Easy: the period. Hard: nothing." in text  # the paper's discussion
     assert "Ten runs per length." in text  # its supporting results, in an appendix

@@ -138,12 +138,14 @@ def test_summary_names_rows_in_the_papers_words_grouped_by_cause():
     s = paper_summary(v, audit, PUBLISHED, "demo.yaml")
     reproduced, failed, causes = s.sentences
     assert reproduced.startswith("Reproduced: 0 of 3 published numbers (0 of 2 exact, 0 of 1 statistical)")  # fmt: skip
-    assert "1 of 2 printed equations match" in reproduced
+    assert reproduced.endswith(
+        "1 of 2 printed equations match the derivation (1 of the others is an error of the paper)."
+    )
     # group (1): the rows of the ranked first cause in the paper's labels, compressed (the
     # table once, with the method its rows share; the claim by where it is made); (2): the rest
     assert failed == (
         "Not reproduced or not upheld (4 verdicts): (1) Table 1, method 4, and the claim of "
-        "Sec. 5; (2) Table 2, method 1; 1 printed equation with an error of the paper."
+        "Sec. 5; (2) Table 2, method 1."
     )
     # the causes by their titles, ranked by rows, with their kind in words and their rows
     assert causes == (
