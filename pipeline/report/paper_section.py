@@ -1,10 +1,12 @@
 """One template for a paper, in the combined report and on its own page: the same sections in
 the same order, built from its :class:`~pipeline.report.paper_parts.PaperParts`.
 
-Main text: Summary (the main claims with their marks, the three sentences, the paper's own
-summary), Equation audit (a statement per differing equation), Published numbers, Claims,
-Figures (the paper's, in its numbering), Findings beyond the paper (with the figures the
-paper lacks). Discussion: the paper's part of it. Appendices: the equation forms, the
+Main text: Summary (the main claims with their marks, the three sentences, the root causes
+listed once in full, the paper's own summary), Equation audit (a statement per differing
+equation), Published numbers and Claims (one row per item or claim, its verdict across the
+curves or averaging counts it is judged on), Figures (the paper's, in its numbering),
+Findings beyond the paper (with the figures the paper lacks). Discussion: the paper's part of
+it. Appendices: the equation forms, the supporting results (every verdict row first), the
 assumptions, and on the page the paper's further sections.
 
 The paper's page sections are reused as they are, their ids prefixed with the paper's slug
