@@ -28,9 +28,10 @@ DIFFERS_KINDS = {
 VERDICT_COLUMNS = ["id", "kind", "quantity", "method", "published", "reproduced", "verdict", "note"]
 # written after the contract columns: the tolerance a verdict applied and the reason it follows
 # and, for a row that is not reproduced or not upheld, its root cause: ``cause_kind`` (one of
-# CAUSE_KINDS) and ``cause`` (one sentence, the same for every row it explains, so the summary
-# groups rows by cause)
-VERDICT_EXTRA_COLUMNS = ["tolerance", "reason", "cause_kind", "cause"]
+# CAUSE_KINDS), ``cause`` (its title: a short fixed phrase, the same for every row it explains,
+# so the summary groups rows by it) and ``cause_detail`` (the full sentence computed from the
+# results, with the numbers it rests on)
+VERDICT_EXTRA_COLUMNS = ["tolerance", "reason", "cause_kind", "cause", "cause_detail"]
 #: paper_error: the paper's own formula, table or text is wrong (shown with the evidence);
 #: unpublished: the number depends on what the paper does not publish (trajectory, rates,
 #: tuning, metric), so it cannot be reproduced from the paper: not refuted;

@@ -146,7 +146,7 @@ def _rms_cause(res) -> Cause:
         "number; " + "; ".join(clauses) + "; so these values cannot be reproduced from what the "
         "paper publishes, which does not refute them."
     )
-    return Cause("unpublished", text)
+    return Cause("unpublished", "trajectory, rates, tuning and RMS metric are not given", text)
 
 
 def ranking_cause(res, filt: str, ref: str) -> Cause:
@@ -187,7 +187,7 @@ def _ranking_cause(res, filt: str, ref: str) -> Cause:
         "The paper gives no setting of its UKF (scaling, noise handling, integration) and not "
         "its trajectory, and with ours the ranking does not hold: " + "; ".join(parts) + "."
     )
-    return Cause("unpublished", text)
+    return Cause("unpublished", "UKF settings and trajectory are not given", text)
 
 
 def level_flight_cause(res, checks: Sequence[NeesCheck]) -> Cause | None:
@@ -211,6 +211,7 @@ def _level_flight_cause(res, checks: Sequence[NeesCheck]) -> Cause | None:
     inside = all(lo <= c.steady_mean <= hi for c in checks)
     return Cause(
         "model",
+        "roll is barely observable in our wings-level flight",
         f"The roll sigma is too large (under-confident) mostly in our wings-level flight, "
         f"where roll reaches the altimeter only to second order (through c3 = cos(roll) "
         f"cos(pitch)): of the times after the transient with the roll NEES below the band "
@@ -238,6 +239,7 @@ def _bias_cause(res, check: NeesCheck) -> Cause | None:
     lo, hi = check.band
     return Cause(
         "model",
+        "the filter's error is mostly a bias outside its sigma",
         f"The {check.filter}'s {check.angle} error is mostly a bias of its own prediction, "
         f"which its sigma does not contain: on one noise-free run with an exact start its "
         f"{check.angle} RMS is {nf:.3f} deg, {nf / mc:.0%} of its Monte Carlo {mc:.3f} deg, and "
@@ -256,6 +258,7 @@ def _ekf_cause(filt: str, ref: str, tail: dict[str, tuple[float, float]]) -> Cau
     shown = "; ".join(f"{a} {x:.3f} against {y:.3f} deg" for a, (x, y) in tail.items())
     return Cause(
         "unpublished",
+        "the EKF's settings are not given",
         f"The paper gives no setting of its EKF (discretisation, noise model, initial errors); "
         f"ours ({filt}: the UKF's Euler-angle model linearised at the estimate) ends the flight "
         f"at {span(ratios)} times the {ref}'s RMS over the last tenth ({shown}), so a divergence "

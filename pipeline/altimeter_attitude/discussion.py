@@ -30,9 +30,12 @@ def _rms(inputs: ReportInputs, r: Results) -> str:
     if not set(RMS_SUMMARY_COLUMNS) <= set(s.columns):
         return ""
     s = s.set_index("filter")
-    parts = []
+    parts, seen = [], set()
     for _, row in r.rows(kind="approximate").iterrows():
         f, q = str(row["method"]), str(row["quantity"])
+        if (f, q) in seen:  # a value judged over several windows: once, over the flight
+            continue
+        seen.add((f, q))
         if f in s.index and q in s.columns:
             what = f"{r.names.words(q)} of the {r.names.words(f)}"
             parts.append(f"{what} {s.loc[f, q]:.2f} deg against {row['published']} deg")

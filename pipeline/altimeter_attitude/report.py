@@ -40,7 +40,11 @@ from pipeline.altimeter_attitude.report_findings import (
     fmt3,
     sweep_table,
 )
-from pipeline.altimeter_attitude.report_summary import steady_blocks, summary_blocks
+from pipeline.altimeter_attitude.report_summary import (
+    headline_blocks,
+    steady_blocks,
+    summary_blocks,
+)
 from pipeline.altimeter_attitude.scenario import load_scenario
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
@@ -131,7 +135,8 @@ CAUSE = ("cause_kind", "cause")
 
 
 def _verdicts(verdicts: pd.DataFrame) -> Section:
-    shown = verdicts.drop(columns=[c for c in ("cause",) if c in verdicts.columns])
+    # the cause's title stays; its full text is in the Summary's list of causes
+    shown = verdicts.drop(columns=[c for c in ("cause_detail",) if c in verdicts.columns])
     values = shown[shown["kind"] != "claim"]
     claims = shown[shown["kind"] == "claim"]
     intro = Paragraph(
@@ -142,8 +147,8 @@ def _verdicts(verdicts: pd.DataFrame) -> Section:
         "results; the reproduced column is its computed evidence. The sigma-consistency claims "
         "have one row per angle: NEES above the chi-square band means the filter's sigma is "
         "too small (over-confident), below it too large (under-confident). The cause_kind "
-        "column gives the kind of a failing row's root cause (the Summary states each cause "
-        "once, with its rows); 'unpublished' means it cannot be reproduced from what the paper "
+        "and cause columns give the kind and title of a failing row's root cause (the Summary "
+        "states each cause once, in full, with its rows); 'unpublished' means it cannot be reproduced from what the paper "
         "publishes, which does not refute it."
     )
     return Section(
@@ -162,8 +167,10 @@ def _results(
     descriptions: Mapping[str, str],
     published: str,
     windows: Mapping[str, pd.DataFrame] | None = None,
+    headline: Sequence[Block] = (),
 ) -> Section:
     blocks: list[Block] = [
+        *headline,
         Paragraph(
             "rms_summary.csv per scenario: RMS over runs and over time after the transient; "
             "sigma: RMS of the filter's own standard deviation; NEES: mean of error^2 / sigma^2 "
@@ -346,7 +353,13 @@ def report(inputs: ReportInputs) -> PaperReport:
         ),
         Section("equation-audit", "Equation audit", _audit(audit, inputs.shown(audit_path))),
         _verdicts(verdicts),
-        _results(sums, descriptions, published_scenario, windows),
+        _results(
+            sums,
+            descriptions,
+            published_scenario,
+            windows,
+            headline_blocks(verdicts, sums, published_scenario, windows),
+        ),
         _figures(inputs.figures, sweep),
         findings_section(sums, sweep, noise_free),
         _assumptions(files, inputs.shown),

@@ -1,7 +1,9 @@
 """The altimeter_attitude summary: what the paper does, the counts of the equation audit and
-the verdicts, the headline comparison of the published RMS errors with ours per averaging
+the verdicts, and the headline comparison of the published RMS errors with ours per averaging
 window (window_summary.csv of the published scenario; rms_summary.csv for the flight when it
-is absent), the claims not upheld, and the failing rows grouped by root cause."""
+is absent). The comparison's table (:func:`headline_blocks`) goes with the results; the
+claims not upheld and the root causes are the shared template's (its claims tables and its
+list of causes)."""
 
 from __future__ import annotations
 
@@ -15,10 +17,17 @@ from pipeline.altimeter_attitude.columns import RMS_SUMMARY_COLUMNS, WINDOWS
 from pipeline.altimeter_attitude.filter_comparison import ANGLES
 from pipeline.altimeter_attitude.report_findings import DASH, filter_order, fmt3, fmt_ratio
 from pipeline.columns import AUDIT_STATUSES
-from pipeline.report.model import Block, Bullets, Paragraph, frame_table, not_available
+from pipeline.report.model import Block, Bullets, Paragraph, Table, frame_table, not_available
 from pipeline.verdicts.kinds import NUMBER_VERDICTS
 
-__all__ = ["CLAIM_WORDS", "VALUE_WORDS", "group_counts", "steady_blocks", "summary_blocks"]
+__all__ = [
+    "CLAIM_WORDS",
+    "VALUE_WORDS",
+    "group_counts",
+    "headline_blocks",
+    "steady_blocks",
+    "summary_blocks",
+]
 
 VALUE_WORDS = ("reproduced", "consistent", "not_reproduced")
 CLAIM_WORDS = ("upheld", "not_upheld", "not_checkable")
@@ -174,42 +183,6 @@ def _headline(
     return blocks
 
 
-#: plain words for a cause kind (pipeline.columns.CAUSE_KINDS)
-CAUSE_WORDS = {
-    "unpublished": "cannot be reproduced from what the paper publishes (not refuted)",
-    "model": "a property of our model or scenario",
-    "paper_error": "an error of the paper",
-}
-
-
-def _causes(verdicts: pd.DataFrame) -> list[Block]:
-    """The failing rows grouped by root cause (one bullet per cause, its rows listed)."""
-    if "cause" not in verdicts.columns:
-        return []
-    failing = verdicts[verdicts["cause"].astype(str) != ""]
-    if failing.empty:
-        return []
-    items = []
-    for cause, g in failing.groupby("cause", sort=False):
-        kind = str(g["cause_kind"].iloc[0])
-        items.append(f"{CAUSE_WORDS.get(kind, kind)}: {cause} Rows: {', '.join(g['id'])}.")
-    unexplained = verdicts[
-        verdicts["verdict"].isin(["not_reproduced", "not_upheld"])
-        & (verdicts["cause"].astype(str) == "")
-    ]
-    blocks: list[Block] = [
-        Paragraph("Why rows fail, one root cause each (verdicts.csv, cause):"),
-        Bullets(items),
-    ]
-    if len(unexplained):
-        blocks.append(
-            Paragraph(
-                "Failing rows without an identified cause: " + ", ".join(unexplained["id"]) + "."
-            )
-        )
-    return blocks
-
-
 def steady_blocks(windows: pd.DataFrame | None) -> list[Block]:
     """The steady-window statistics of one scenario (window_summary.csv)."""
     if windows is None:
@@ -275,27 +248,27 @@ def summary_blocks(
             ]
         )
     )
-    blocks += _headline(
+    head = _headline(
         verdicts,
         summaries.get(published_scenario),
         published_scenario,
         (windows or {}).get(published_scenario),
     )
-    failed = claims[claims["verdict"] == "not_upheld"]
-    if len(failed):
-        blocks.append(Paragraph("Claims not upheld (evidence from verdicts.csv):"))
-        blocks.append(
-            Bullets(
-                [
-                    f"{r.id} ({r.method}): {r.published}. Computed: {r.reproduced}. "
-                    f"Why: {r.reason}."
-                    if getattr(r, "reason", "")
-                    else f"{r.id} ({r.method}): {r.published}. Computed: {r.reproduced}."
-                    for r in failed.itertuples()
-                ]
-            )
-        )
-    else:
-        blocks.append(Paragraph("Claims not upheld: none."))
-    blocks += _causes(verdicts)
-    return blocks
+    return blocks + [b for b in head if not isinstance(b, Table)]
+
+
+def headline_blocks(
+    verdicts: pd.DataFrame,
+    summaries: Mapping[str, pd.DataFrame],
+    published_scenario: str,
+    windows: Mapping[str, pd.DataFrame] | None = None,
+) -> list[Block]:
+    """The table of the headline comparison: each published RMS value against ours, per
+    window, with its ratio and verdict (empty without published values or results)."""
+    head = _headline(
+        verdicts,
+        summaries.get(published_scenario),
+        published_scenario,
+        (windows or {}).get(published_scenario),
+    )
+    return [b for b in head if isinstance(b, Table)]

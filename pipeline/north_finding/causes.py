@@ -198,7 +198,9 @@ def _levelling_method4(results: Mapping[str, Any]) -> Cause | None:
         f"printed with probability {p:.0e}, so the paper's method-4 row comes from a run it "
         "does not describe"
     )
-    return Cause("unpublished", text)
+    return Cause(
+        "unpublished", "levelling method 4's printed row comes from an undescribed run", text
+    )
 
 
 def azimuth_method2(results: Mapping[str, Any]) -> Cause | None:
@@ -232,7 +234,7 @@ def _azimuth_method2(results: Mapping[str, Any]) -> Cause | None:
         f"reach it only at N <= {_g(n)}, where the paper's other {item['label']} rows would lie "
         f"as close to their noise-free values as printed with probability {p:.0e}"
     )
-    return Cause("unpublished", text)
+    return Cause("unpublished", "no table angle gives azimuth method 2's row", text)
 
 
 def same_estimator(results: Mapping[str, Any], quantity: str, a: str, b: str) -> Cause | None:
@@ -264,7 +266,7 @@ def _same(results: Mapping[str, Any], quantity: str, a: str, b: str) -> Cause | 
         f"trials at {len(mc)} value{'s' if len(mc) != 1 else ''} of N and noise-free, and method {b[1:]} cannot be more "
         f"accurate than method {a[1:]}{printed}"
     )
-    return Cause("paper_error", text)
+    return Cause("paper_error", f"azimuth methods {a[1:]} and {b[1:]} are one estimator", text)
 
 
 def ls_positions(results: Mapping[str, Any]) -> Cause | None:
@@ -301,7 +303,7 @@ def _ls_positions(results: Mapping[str, Any]) -> Cause | None:
         f"dominates its RMS error is {min(ratios):.2f} to {max(ratios):.2f} of theirs "
         f"({s0.where})"
     )
-    return Cause("unpublished", text)
+    return Cause("unpublished", "least-squares levelling positions are not given", text)
 
 
 def acc_bias_misalignment(results: Mapping[str, Any]) -> Cause | None:
@@ -332,7 +334,7 @@ def _acc_bias(results: Mapping[str, Any]) -> Cause | None:
         f"the paper's {paper:+.1f} % ({item['label']}: {item['value']} ug) would need "
         f"{need:+.1f} arcsec"
     )
-    return Cause("unpublished", text)
+    return Cause("unpublished", "accelerometer misalignment terms are not given", text)
 
 
 # --------------------------------------------------------------------------- which cause

@@ -127,6 +127,7 @@ def _n_cause(claim: str, results: list[ClaimResult], sets: list[RankSet]) -> Cau
     why = "; ".join(f"{s.label}: {r.notes[0]}" for r, s in failed if r.notes)
     return Cause(
         "unpublished",
+        "the averaging count N is not given",
         f"The paper does not give the averaging count N, and its ranking ({claim}) holds at "
         f"N = {', '.join(held)} but not at N = {', '.join(s.label for _, s in failed)} ({why})",
     )

@@ -91,6 +91,7 @@ def azimuth_finding(results: Mapping[str, Any]) -> Cause | None:
     )
     return Cause(
         "paper_error",
+        "eq. 36 leaves out the azimuth drift the algorithm accumulates",
         "The 'bounded' channel-3 error holds only for eq. 36, which leaves out the azimuth "
         "error that eq. 16 accumulates with r_m = 0 (psi drifts as b_g3 t): at rest the full "
         f"simulation of the proposed scheme gives {sim.loc[FINAL_S]:.0f} m at 2 h, the same as "
@@ -123,6 +124,7 @@ def combined_direction(errors: pd.DataFrame, published_m: float, ours_m: float) 
         return None
     return Cause(
         "unpublished",
+        "the drift signs and channel-1 strapdown axis are not given",
         "How the channel-1 and channel-3 strapdown errors add depends on the drift signs and "
         "the strapdown axis of channel 1, which the paper does not give: alone they are "
         f"{a / 1e3:.2f} and {b / 1e3:.2f} km at 2 h, so any combined error from {lo / 1e3:.2f} "
@@ -145,6 +147,7 @@ def analytic_above_early(errors: pd.DataFrame, case: str, from_s: float) -> Caus
         return None
     return Cause(
         "paper_error",
+        "eqs. 32 + 36 exceed the strapdown error early on",
         f"Eq. 36 alone exceeds the strapdown's channel-3 error until {t3:.0f} s (the paper "
         "reports this for channel 3 alone) while the channel-1 errors coincide, so eqs. 32 + 36 "
         f"exceed the strapdown error between {above.index.min():.0f} s and {above.index.max():.0f} s "

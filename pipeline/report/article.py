@@ -7,11 +7,11 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from pipeline.report.causes import plural
 from pipeline.report.model import Block, Bullets, Paragraph, Section, Table
 from pipeline.report.paper_parts import PaperParts
 from pipeline.report.paper_section import MAIN_TITLES, discussion_section
-from pipeline.report.summary import plural
-from pipeline.report.vocabulary import CAUSE_WORDS, DIFFERS_WORDS, MARK_WORDS
+from pipeline.report.vocabulary import CAUSE_SHORT_WORDS, CAUSE_WORDS, DIFFERS_WORDS, MARK_WORDS
 
 __all__ = ["abstract", "discussion", "introduction", "references"]
 
@@ -50,8 +50,7 @@ def abstract(papers: Sequence[PaperParts]) -> str:
         + (f"{n_err} of them errors of the paper" if n_classified else "not yet classified by kind")
         + "), "
         f"{n_good} of {n_num} published numbers are reproduced and {n_upheld} of "
-        f"{plural(n_claim, 'claim verdict')} are upheld. Each paper's main claims and what "
-        "was and was not reproduced follow."
+        f"{plural(n_claim, 'claim verdict')} are upheld."
     )
 
 
@@ -86,7 +85,13 @@ def introduction(papers: Sequence[PaperParts], appendix_names: Sequence[str]) ->
             "judged by a named test. A printed equation that differs is an "
             + ", an ".join(DIFFERS_WORDS.values())
             + "; only an error of the paper is shown in red. A failing verdict names its root "
-            "cause where one is identified: " + "; ".join(CAUSE_WORDS.values()) + "."
+            "cause where one is identified, by a short title; its kind is one of: "
+            + "; ".join(
+                w if CAUSE_SHORT_WORDS.get(k, w) == w else f"{CAUSE_SHORT_WORDS[k]}, that is {w}"
+                for k, w in CAUSE_WORDS.items()
+            )
+            + ". The front page counts the rows each cause explains; each paper's summary gives "
+            "its causes in full."
         ),
         Paragraph(
             "Each paper's section has the same parts in the same order: "

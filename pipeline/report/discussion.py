@@ -13,9 +13,9 @@ import pandas as pd
 
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
 from pipeline.report.model import Block, Paragraph, ReportInputs
+from pipeline.report.names import RowNames
 from pipeline.report.paper_parts import AUDIT_OPTIONAL, VERDICT_OPTIONAL, read_results_csv
 from pipeline.report.published import load_published
-from pipeline.report.summary import RowNames
 from pipeline.report.vocabulary import DIFFERS_WORDS, differs_word
 from pipeline.verdicts.main_claims import PASSING
 

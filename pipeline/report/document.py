@@ -135,7 +135,11 @@ def build_document(
         Section(
             "supporting",
             APPENDICES[1],
-            [Paragraph("The results the papers' findings rest on, per paper.")]
+            [
+                Paragraph(
+                    "Per paper, every verdict row (the main text gives one row per item or claim) and the results its findings rest on."
+                )
+            ]
             if supporting
             else [Paragraph("No paper lists results beyond its findings.")],
             supporting,

@@ -30,6 +30,7 @@ __all__ = [
     "VERDICT_EXTRA_COLUMNS",
     "Block",
     "Bullets",
+    "CauseLine",
     "Document",
     "EquationRow",
     "EquationTable",
@@ -165,13 +166,29 @@ Block = Paragraph | Bullets | Table | Figure | EquationTable | Link | MainClaims
 
 
 @dataclass(frozen=True)
+class CauseLine:
+    """One root cause of a paper's failing verdicts: its ``title`` (verdicts.csv ``cause``;
+    blank: not identified), its ``kind`` (pipeline.columns.CAUSE_KINDS), how many ``rows`` it
+    explains, those rows in the paper's labels (``labels``) and its full texts (the distinct
+    ``cause_detail`` of its rows, in row order)."""
+
+    title: str
+    kind: str
+    rows: int
+    labels: str
+    details: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
 class PaperSummary:
     """A paper on the first page: ``status`` (Full / Partial / Not reproduced), three plain
-    sentences (what was reproduced, what was not, the cause) and its main claims."""
+    sentences (what was reproduced, what was not, the cause), its main claims, and the root
+    causes of its failing verdicts (most rows first; the paper's section lists them)."""
 
     status: str
     sentences: tuple[str, str, str]
     main_claims: tuple[MainClaimLine, ...]
+    causes: tuple[CauseLine, ...] = ()
 
 
 @dataclass(frozen=True)

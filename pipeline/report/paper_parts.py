@@ -20,7 +20,13 @@ from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
 from pipeline.paper import Paper
 from pipeline.report.equations import equation_rows, read_math
 from pipeline.report.model import Block, EquationRow, PaperReport, ReportInputs, ScoreRow, Section
-from pipeline.report.published import claims_section, load_published, published_section
+from pipeline.report.published import (
+    claim_rows_section,
+    claims_section,
+    load_published,
+    published_rows_section,
+    published_section,
+)
 from pipeline.report.scoreboard import score_row
 from pipeline.verdicts.published import load_published as load_checked
 
@@ -28,7 +34,7 @@ __all__ = ["AUDIT_OPTIONAL", "VERDICT_OPTIONAL", "PaperParts", "load_parts", "re
 
 #: the columns the reports read where a results file has them
 AUDIT_OPTIONAL = ("kind",)
-VERDICT_OPTIONAL = ("tolerance", "reason", "cause_kind", "cause")
+VERDICT_OPTIONAL = ("tolerance", "reason", "cause_kind", "cause", "cause_detail")
 
 
 def read_results_csv(
@@ -58,12 +64,16 @@ class PaperParts:
     score: ScoreRow
     report: PaperReport
     equations: list[EquationRow]
+    #: the main text's published numbers and claims (one row per item or claim)
     published: Section
     claims: Section
     discussion: list[Block]
     stems: dict[str, str]
     #: the repository folder of the reports (its pages and notebooks), e.g. ``reports``
     reports: str = "reports"
+    #: every verdict row of the published numbers and of the claims (the appendix)
+    published_rows: Section | None = None
+    claim_rows: Section | None = None
 
     @property
     def page(self) -> str:
@@ -99,6 +109,10 @@ def load_parts(paper: Paper, inputs: ReportInputs, reports: str = "reports") -> 
         equations=rows,
         published=published_section(f"{paper.slug}-published", verdicts, inputs.published),
         claims=claims_section(f"{paper.slug}-claims", verdicts, inputs.published),
+        published_rows=published_rows_section(
+            f"{paper.slug}-published-rows", verdicts, inputs.published
+        ),
+        claim_rows=claim_rows_section(f"{paper.slug}-claim-rows", verdicts, inputs.published),
         discussion=list(paper.discussion_function()(inputs)),
         stems=dict(paper.math_stems),
         reports=reports,

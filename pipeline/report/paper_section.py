@@ -1,10 +1,12 @@
 """One template for a paper, in the combined report and on its own page: the same sections in
 the same order, built from its :class:`~pipeline.report.paper_parts.PaperParts`.
 
-Main text: Summary (the main claims with their marks, the three sentences, the paper's own
-summary), Equation audit (a statement per differing equation), Published numbers, Claims,
-Figures (the paper's, in its numbering), Findings beyond the paper (with the figures the
-paper lacks). Discussion: the paper's part of it. Appendices: the equation forms, the
+Main text: Summary (the main claims with their marks, the three sentences, the root causes
+listed once in full, the paper's own summary), Equation audit (a statement per differing
+equation), Published numbers and Claims (one row per item or claim, its verdict across the
+curves or averaging counts it is judged on), Figures (the paper's, in its numbering),
+Findings beyond the paper (with the figures the paper lacks). Discussion: the paper's part of
+it. Appendices: the equation forms, the supporting results (every verdict row first), the
 assumptions, and on the page the paper's further sections.
 
 The paper's page sections are reused as they are, their ids prefixed with the paper's slug
@@ -17,6 +19,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from pipeline.report.causes import causes_blocks, plural
 from pipeline.report.equations import equation_appendix, equation_section
 from pipeline.report.model import (
     Block,
@@ -28,7 +31,6 @@ from pipeline.report.model import (
     Table,
 )
 from pipeline.report.paper_parts import PaperParts
-from pipeline.report.summary import plural
 
 __all__ = [
     "MAIN_TITLES",
@@ -170,6 +172,7 @@ def _summary(p: PaperParts, page: bool) -> Section:
         if s.main_claims:
             blocks.append(MainClaims(list(s.main_claims)))
         blocks += [Paragraph(t) for t in s.sentences]
+        blocks += causes_blocks(s.causes)
     elif s is not None:
         marks = [m.mark for m in s.main_claims]
         held = f"; {marks.count('Re')} of {len(marks)} main claims [Re]" if marks else ""
@@ -179,6 +182,7 @@ def _summary(p: PaperParts, page: bool) -> Section:
                 "reproduced are in the papers in brief, at the front of this report."
             )
         )
+        blocks += causes_blocks(s.causes)
     own, subs = _part(p, "summary")
     return Section(f"{p.slug}-summary", "Summary", blocks + own + _links(p, page), subs)
 
@@ -257,17 +261,29 @@ def assumptions_section(p: PaperParts, title: str | None = None) -> Section:
     return Section(f"{p.slug}-assumptions", title or p.title, blocks, subs)
 
 
+def _every_row(p: PaperParts) -> Section | None:
+    """Every verdict row of the paper (published numbers and claims), after its causes in
+    full: the per-row view of the main text's one row per item or claim."""
+    parts = [s for s in (p.published_rows, p.claim_rows) if s is not None]
+    if not parts:
+        return None
+    blocks: list[Block] = []
+    if p.score.summary is not None:
+        blocks += causes_blocks(p.score.summary.causes)
+    for s in parts:
+        blocks += s.blocks
+    return Section(f"{p.slug}-rows", "Every verdict row", blocks)
+
+
 def supporting_section(
     p: PaperParts, title: str | None = None, flatten: bool = True
 ) -> Section | None:
-    """The sections the paper lists for its findings after the first: the results that
-    support them (an appendix; each keeps its id and title; ``flatten``: their subsections
-    merged into them, as the PDF's heading depth needs), None if there are none."""
-    ids = list(p.report.parts.get("findings") or [])[1:]
-    if not ids:
-        return None
-    subs = []
-    for sid in ids:
+    """The results that support the main text: every verdict row, then the sections the
+    paper lists for its findings after the first (an appendix; each keeps its id and title;
+    ``flatten``: their subsections merged into them, as the PDF's heading depth needs), None
+    if there are none."""
+    subs = [s for s in (_every_row(p),) if s is not None]
+    for sid in list(p.report.parts.get("findings") or [])[1:]:
         sec = p.report.section(sid)
         if sec is None:
             raise ValueError(
@@ -276,6 +292,8 @@ def supporting_section(
             )
         sec = prefixed(sec, p.slug)
         subs.append(_flatten_deep(_inline_single_tables(sec), depth=2) if flatten else sec)
+    if not subs:
+        return None
     return Section(f"{p.slug}-supporting", title or p.title, [], subs)
 
 

@@ -132,7 +132,7 @@ class BlockRenderer:
                 f"[{self.text(m.basis)}])"
             )
         return (
-            "#block(above: 0.8em, below: 0.9em, stack(spacing: 0.55em, " + ", ".join(lines) + "))"
+            "#block(above: 0.6em, below: 0.7em, stack(spacing: 0.45em, " + ", ".join(lines) + "))"
             if lines
             else ""
         )

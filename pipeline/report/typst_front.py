@@ -27,7 +27,7 @@ def _paper(r: BlockRenderer, row: ScoreRow) -> list[str]:
     if s is None:
         return []
     out = [
-        f"#block(above: 1.1em, below: 0.4em, sticky: true)[*{r.anchor_link(row.anchor, row.title)}* "
+        f"#block(above: 0.9em, below: 0.4em, sticky: true)[*{r.anchor_link(row.anchor, row.title)}* "
         f'#h(0.4em) #text(weight: "bold", fill: {_tone(s.status)}, hyphenate: false)'
         f"[{escape(s.status)}]]"
     ]
@@ -84,14 +84,14 @@ def title_page(r: BlockRenderer, doc: Document) -> str:
     out = [
         "#page(numbering: none)[",
         "#set par(justify: false)",
-        "#set text(size: 9pt)",
-        "#set par(spacing: 0.7em)",
-        f'#align(center, text(size: 18pt, weight: "bold")[{escape(doc.title)}])',
+        "#set text(size: 8.6pt)",
+        "#set par(spacing: 0.6em)",
+        f'#align(center, text(size: 16pt, weight: "bold")[{escape(doc.title)}])',
         "#v(1mm)",
     ]
     if doc.subtitle:
         out.append(f"#align(center, text(size: 11pt)[{escape(doc.subtitle)}])")
-    out.append("#v(3mm)")
+    out.append("#v(2mm)")
     if doc.abstract:
         out.append(f"#block(inset: (x: 6mm))[*Abstract.* {r.text(doc.abstract)}]")
     for row in doc.scoreboard:

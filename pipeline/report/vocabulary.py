@@ -18,11 +18,13 @@ from __future__ import annotations
 import re
 
 __all__ = [
+    "CAUSE_SHORT_WORDS",
     "CAUSE_WORDS",
     "DIFFERS_WORDS",
     "MARK_WORDS",
     "TOKENS",
     "WORDS",
+    "cause_short",
     "cause_word",
     "differs_word",
     "plain_words",
@@ -57,6 +59,13 @@ CAUSE_WORDS = {
     "unpublished": "cannot be reproduced from what the paper publishes (not refuted)",
     "model": "our model or scenario differs from the paper's",
 }
+#: the same kinds in a word or two, where a summary names many causes in one sentence (the
+#: introduction gives each its full words)
+CAUSE_SHORT_WORDS = {
+    "paper_error": "error of the paper",
+    "unpublished": "unpublished",
+    "model": "our model",
+}
 #: main-claim marks (pipeline.verdicts.main_claims.MARKS) -> the words shown
 MARK_WORDS = {"Re": "[Re]", "not_Re": "[¬Re]", "not_checkable": "not checkable"}
 
@@ -78,6 +87,11 @@ def differs_word(kind: str) -> str:
 def cause_word(kind: str) -> str:
     """The words for the kind of a root cause; blank: not identified."""
     return CAUSE_WORDS.get(kind.strip(), "cause not identified" if not kind.strip() else kind)
+
+
+def cause_short(kind: str) -> str:
+    """The short words for the kind of a root cause; blank: not identified."""
+    return CAUSE_SHORT_WORDS.get(kind.strip(), cause_word(kind))
 
 
 def tone(token: str, differs_kind: str = "") -> str:

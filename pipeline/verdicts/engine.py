@@ -11,7 +11,8 @@ The engine names no paper. A paper package gives it
 :func:`verdict_table` judges every item with its kind's rule (:mod:`pipeline.verdicts.kinds`)
 and every claim with its registered test, and :func:`write_verdicts` writes
 ``results/<slug>/verdicts.csv`` atomically with :data:`VERDICT_FILE_COLUMNS` (the contract
-columns, then ``tolerance``, ``reason``, ``cause_kind`` and ``cause``).
+columns, then ``tolerance``, ``reason``, ``cause_kind``, ``cause`` (the cause's title) and
+``cause_detail`` (its full text)).
 
 >>> from pipeline.verdicts.claims import ClaimRegistry
 >>> pub = {"items": [{"id": "A", "label": "Table 1", "kind": "exact", "quantity": "x_m",

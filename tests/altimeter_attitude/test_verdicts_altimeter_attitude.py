@@ -197,8 +197,9 @@ def test_unpublished_cause_is_shared_and_computed(published, tmp_path):
     d = _results(tmp_path, lkf_roll=0.9, ukf_roll=0.6, steady={"linear_kf": 0.4, "ukf": 0.5})
     frame = judge(published, d, 10.0)
     failing = frame[frame["verdict"] == "not_reproduced"]
-    assert len(failing) == 8 and failing["cause"].nunique() == 1
-    text = failing["cause"].iloc[0]
+    assert len(failing) == 8 and failing["cause_detail"].nunique() == 1
+    assert set(failing["cause"]) == {"trajectory, rates, tuning and RMS metric are not given"}
+    text = failing["cause_detail"].iloc[0]
     assert "trajectory" in text and "sample rates" in text and "does not refute" in text
     # the window moves linear_kf roll by 0.9 - 0.4 = 0.5 deg; the largest of the four
     assert re.search(r"changes our 4 values by 0\.\d\d-0\.50 deg", text), text
@@ -209,7 +210,7 @@ def test_unpublished_cause_is_shared_and_computed(published, tmp_path):
     assert "b = 0.50" in text and f"near {min(rates):.0f}-{max(rates):.0f} Hz" in text
     # without the sweep the cause keeps the window evidence only
     bare = judge(published, d, 10.0, sweep=False)
-    assert "sweep" not in bare[bare["verdict"] == "not_reproduced"]["cause"].iloc[0]
+    assert "sweep" not in bare[bare["verdict"] == "not_reproduced"]["cause_detail"].iloc[0]
 
 
 def test_claims_on_synthetic_results(published, tmp_path):
@@ -225,7 +226,10 @@ def test_claims_on_synthetic_results(published, tmp_path):
     assert v["C6.leveling_fails"] == "upheld"  # 30 deg vs 0.16 under load
     assert v["C7.ekf_diverges"] == "not_upheld"
     assert v["C8.gamma_term_needed"] == "not_upheld"  # identical curves
-    assert "ends the flight at 1.00 times" in frame.set_index("id").at["C7.ekf_diverges", "cause"]
+    assert (
+        "ends the flight at 1.00 times"
+        in frame.set_index("id").at["C7.ekf_diverges", "cause_detail"]
+    )
 
 
 def test_claims_flip_with_the_data(published, tmp_path):
@@ -248,7 +252,7 @@ def test_ranking_is_judged_per_window_with_one_cause(published, tmp_path):
     frame = judge(published, d, 10.0).set_index("id")
     assert frame.at["C1.linear_beats_ukf/flight", "verdict"] == "not_upheld"
     assert frame.at["C1.linear_beats_ukf/steady", "verdict"] == "upheld"
-    cause = frame.at["C1.linear_beats_ukf/flight", "cause"]
+    cause = frame.at["C1.linear_beats_ukf/flight", "cause_detail"]
     assert "over the flight linear_kf 0.900/0.450 against ukf 0.500/0.250 deg" in cause
     assert "0 for roll (flight)" in cause and "5 for roll (steady)" in cause
 
@@ -315,11 +319,11 @@ def test_under_confident_roll_in_level_flight_gets_the_model_cause(published, tm
 
     frame = judge(published, _results(tmp_path, nees_curve=level), 10.0).set_index("id")
     rows = frame.loc[["C2.lkf_sigma_consistent/roll", "C3.ukf_sigma_consistent/roll"]]
-    assert (rows["verdict"] == "not_upheld").all() and rows["cause"].nunique() == 1
+    assert (rows["verdict"] == "not_upheld").all() and rows["cause_detail"].nunique() == 1
     assert rows["cause_kind"].iloc[0] == "model"
     assert (
         "linear_kf 100% of 400, ukf 100% of 400 have a true |roll| below 10 deg"
-        in (rows["cause"].iloc[0])
+        in (rows["cause_detail"].iloc[0])
     )
 
     def banked(t):
@@ -333,7 +337,7 @@ def test_under_confident_roll_in_level_flight_gets_the_model_cause(published, tm
 def test_over_confident_bias_cause_needs_a_noise_free_bias(published, tmp_path):
     biased = judge(published, _results(tmp_path, nees=1.6, noise_free_share=0.9), 10.0)
     row = biased.set_index("id").loc["C3.ukf_sigma_consistent/pitch"]
-    assert row["cause_kind"] == "model" and "90% of its Monte Carlo" in row["cause"]
+    assert row["cause_kind"] == "model" and "90% of its Monte Carlo" in row["cause_detail"]
     clean = judge(published, _results(tmp_path, nees=1.6, noise_free_share=0.1), 10.0)
     assert clean.set_index("id").at["C3.ukf_sigma_consistent/pitch", "cause"] == ""
 

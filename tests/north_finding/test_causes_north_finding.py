@@ -107,7 +107,8 @@ def test_one_cause_for_the_table_rows_and_the_claims() -> None:
     t = verdict_table(pub, locate, CLAIMS, res).set_index("id")
     failing = t[t["verdict"].isin(["not_reproduced", "not_upheld"])]
     assert set(failing.index) == {"T.phi_deg.L4", "T.theta_deg.L4", "C1/N=1e6", "C1/noise-free"}
-    assert failing["cause"].nunique() == 1 and failing["cause"].iloc[0].startswith("Levelling method 4")  # fmt: skip
+    assert failing["cause_detail"].nunique() == 1 and failing["cause_detail"].iloc[0].startswith("Levelling method 4")  # fmt: skip
+    assert set(failing["cause"]) == {"levelling method 4's printed row comes from an undescribed run"}  # fmt: skip
     assert t.loc["T.phi_deg.L1", "cause"] == ""  # consistent rows carry no cause
 
 

@@ -143,9 +143,11 @@ def test_identical_estimators_tie_at_every_n() -> None:
     assert "A5 identical to A4 on every trial" in t.loc["C.x/N=100", "reason"]
     assert "A5 identical to A4 noise-free" in t.loc["C.x/noise-free", "reason"]
     # one cause for both rows: the two methods are one estimator (they read the same positions)
-    assert t["cause_kind"].tolist() == ["paper_error"] * 2 and t["cause"].nunique() == 1
+    assert t["cause_kind"].tolist() == ["paper_error"] * 2 and t["cause_detail"].nunique() == 1
+    assert set(t["cause"]) == {"azimuth methods 4 and 5 are one estimator"}
     assert (
-        "methods 4 and 5 solve the same gyro readings (tau = 0, 90, 180 deg)" in t["cause"].iloc[0]
+        "methods 4 and 5 solve the same gyro readings (tau = 0, 90, 180 deg)"
+        in t["cause_detail"].iloc[0]
     )
 
 

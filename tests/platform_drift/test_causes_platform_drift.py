@@ -97,8 +97,11 @@ def test_the_finding_explains_every_row_of_the_simulated_curve_with_one_text():
                "B2/proposed_simulated"]  # fmt: skip
     assert (out.loc[failing, "verdict"].isin(["not_reproduced", "not_upheld"])).all()
     assert set(out.loc[failing, "cause_kind"]) == {"paper_error"}
-    texts = set(out.loc[failing, "cause"])
+    texts = set(out.loc[failing, "cause_detail"])
     assert len(texts) == 1  # one root cause, one identical sentence
+    assert set(out.loc[failing, "cause"]) == {
+        "eq. 36 leaves out the azimuth drift the algorithm accumulates"
+    }
     text = texts.pop()
     # the numbers of the at-rest results: simulated and strapdown at 2 h, the eq. 36 bound
     # over the 24 h run, the simulation with the true azimuth rate
@@ -138,8 +141,8 @@ def test_combined_strapdown_error_explained_by_the_unpublished_direction():
         assert row["verdict"] == "not_reproduced"
         assert (row["cause_kind"] == "unpublished") is explained, value
         if explained:
-            assert "from 10.81 to 13.85 km is possible" in row["cause"]
-            assert "ours is 13.69 km" in row["cause"]
+            assert "from 10.81 to 13.85 km is possible" in row["cause_detail"]
+            assert "ours is 13.69 km" in row["cause_detail"]
 
 
 def test_analytic_above_the_strapdown_early_explained_by_the_papers_own_crossover():
@@ -166,7 +169,7 @@ def test_analytic_above_the_strapdown_early_explained_by_the_papers_own_crossove
     out = _table(published, results(ch1))
     row = out.loc["C4/proposed_analytic"]
     assert row["verdict"] == "not_upheld" and row["cause_kind"] == "paper_error"
-    assert "Eq. 36 alone exceeds the strapdown's channel-3 error until" in row["cause"]
+    assert "Eq. 36 alone exceeds the strapdown's channel-3 error until" in row["cause_detail"]
     assert out.loc["C4/proposed_simulated", "verdict"] == "upheld"
     # if eq. 32 did not match the strapdown's channel-1 error, the paper's two statements
     # would not imply the early excess: no cause

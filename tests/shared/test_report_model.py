@@ -193,7 +193,7 @@ def test_page_follows_the_template(inputs, tmp_path):
     # the main claims, marked from the verdict rows; the three sentences in the paper's words
     assert '<span class="mark m-not-re">[¬Re]</span> The small-angle period formula holds.' in text
     assert '<span class="mark m-re">[Re]</span> Mass does not matter.' in text
-    assert "Table 1, the second pendulum, period" in text
+    assert "Not reproduced or not upheld (1 verdict): Table 1, the second pendulum." in text
     assert "T1.b" not in _text(text)  # no internal id
     assert "Easy: the period. Hard: nothing." in text  # the paper's discussion
     assert "Ten runs per length." in text  # its supporting results, in an appendix
@@ -242,10 +242,19 @@ def test_paper_section_is_assembled_from_the_papers_parts(inputs):
     # the first findings section is the finding; the others support it (an appendix)
     assert Paragraph("The period grows with amplitude.") in findings.blocks
     assert Paragraph("Ten runs per length.") not in findings.blocks
-    (support,) = supporting_section(parts).subsections
+    every, support = supporting_section(parts).subsections
     assert (
         support.title == "Supporting runs" and Paragraph("Ten runs per length.") in support.blocks
     )
+    # every verdict row, with how its verdict was reached, is in the appendix
+    assert every.title == "Every verdict row"
+    row_tables = [b for b in every.blocks if isinstance(b, Table)]
+    assert [t.columns[-1] for t in row_tables] == ["why", "verdict"]
+    assert [r[0] for t in row_tables for r in t.rows] == [
+        "the first pendulum",
+        "the second pendulum",
+        "“The period does not depend on the mass” (Sec. 3)",
+    ]
     # the published numbers by the paper's table, in its words, at printed precision + 2
     (table,) = [b for b in published.blocks if isinstance(b, Table)]
     assert table.caption == "Table 1: period"
@@ -294,7 +303,7 @@ def test_the_papers_math_stems_reach_the_pdf():
 
 
 def test_published_tables_show_tolerance_and_cause(tmp_path):
-    from pipeline.report.published import published_section
+    from pipeline.report.published import published_rows_section, published_section
 
     published = tmp_path / "p.yaml"
     published.write_text(
@@ -316,23 +325,27 @@ def test_published_tables_show_tolerance_and_cause(tmp_path):
     # by the number in the paper's table or figure label (10 after 2); one quantity: captioned
     assert [t.caption for t in tables] == ["Table 2: q", "Fig. 10: q", "Table 10: q"]
     assert tables[1].highlight == [0] and tables[0].highlight == []
-    assert tables[0].columns == ["item", "published", "ours", "tolerance", "verdict", "why"]
+    # the main text: no 'why' column (it is in the per-row tables of the appendix)
+    assert tables[0].columns == ["item", "published", "ours", "tolerance", "verdict"]
     verdicts = verdicts.assign(
         tolerance="+-20% of 1 (an 'about' value the authors read off their own plot)",
         reason="within the tolerance",
         cause_kind=["", "unpublished", "", ""],
-        cause=["", "the paper does not publish the trajectory", "", ""],
+        cause=["", "the trajectory is not published", "", ""],
+        cause_detail=["", "The paper does not publish the trajectory (3 banks in ours).", "", ""],
     )
     sec = published_section("p", verdicts, published)
     tables = [b for b in sec.blocks if isinstance(b, Table)]
-    assert tables[0].columns[-1] == "cause"
-    assert tables[1].rows[0][3:] == [
-        "+-20% of 1",
-        "not_reproduced",
-        "within the tolerance",
-        "the paper does not publish the trajectory (cannot be reproduced from what the paper "
-        "publishes (not refuted))",
-    ]
+    # a cause column only in a table where a row fails with a cause
+    assert [t.columns[-1] for t in tables] == ["verdict", "cause", "verdict"]
+    # the cause's title only: its full text is listed once, with the paper's causes
+    assert tables[1].rows[0][3:] == ["+-20% of 1", "not_reproduced", "the trajectory is not published"]  # fmt: skip
     assert (
         Paragraph("Tolerance: an 'about' value the authors read off their own plot.") in sec.blocks
     )
+    every = published_rows_section("p", verdicts, published)
+    (_, row, _) = [t for t in every.blocks if isinstance(t, Table)]
+    assert row.columns[-2:] == ["why", "cause"]
+    assert row.rows[0][3:] == ["+-20% of 1", "not_reproduced", "within the tolerance", "the trajectory is not published"]  # fmt: skip
+    # the HTML's last column: the row's note and the cause's full text
+    assert row.notes == ["cause: The paper does not publish the trajectory (3 banks in ours)."]

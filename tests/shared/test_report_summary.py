@@ -41,7 +41,7 @@ PUBLISHED = {
          "rows": ["C1", "C2/simulated"]},
     ],
     "names": {"phi_deg": "roll", "theta_deg": "pitch", "M4": "method 4", "M1": "method 1",
-              "simulated": "the simulated curve"},
+              "simulated": "the simulated curve", "analytic": "the analytic curve"},
 }  # fmt: skip
 
 
@@ -120,38 +120,130 @@ def test_a_main_claims_mark_follows_its_rows():
         )
 
 
+def _caused(v: pd.DataFrame, ids: list[str], kind: str, title: str, detail: str) -> None:
+    for i in ids:
+        v.loc[v["id"] == i, ["cause_kind", "cause", "cause_detail"]] = [kind, title, detail]
+
+
 def test_summary_names_rows_in_the_papers_words_grouped_by_cause():
     audit = pd.DataFrame({"equation": ["1", "2"], "status": ["match", "differs"],
                           "residual": ["0", "x"], "note": ["", ""], "kind": ["", "paper_error"]})  # fmt: skip
     v = _verdicts(
         T1_a="not_reproduced", T1_b="not_reproduced", C1="not_upheld", T2_a="not_reproduced"
-    )
+    ).assign(cause_detail="")
     # one cause explains three rows (Table 1 and the claim), another none
-    cause = "method 4's formula drops a sign"
-    for i in ("T1.a", "T1.b", "C1"):
-        v.loc[v["id"] == i, ["cause_kind", "cause"]] = ["paper_error", cause]
+    title = "method 4's formula drops a sign"
+    detail = "Method 4's eq. 7 drops the sign of its second term (residual 2 x)."
+    _caused(v, ["T1.a", "T1.b", "C1"], "paper_error", title, detail)
     s = paper_summary(v, audit, PUBLISHED, "demo.yaml")
     reproduced, failed, causes = s.sentences
-    assert reproduced.startswith("Reproduced: 0 of 3 published numbers")
-    assert "1 of 2 printed equations match" in reproduced
-    # group (1): the rows of the ranked first cause, in the paper's labels; (2): the rest
-    assert failed.startswith(
-        "Not reproduced or not upheld (4 verdicts): (1) Table 1, method 4, roll; "
-        "Table 1, method 4, pitch; “Method 4 is the worst” (Sec. 5); (2) Table 2, method 1, roll"
+    assert reproduced.startswith("Reproduced: 0 of 3 published numbers (0 of 2 exact, 0 of 1 statistical)")  # fmt: skip
+    assert reproduced.endswith(
+        "1 of 2 printed equations match the derivation (1 of the others is an error of the paper)."
     )
-    assert "printed equations with an error of the paper: eq. 2" in failed
+    # group (1): the rows of the ranked first cause in the paper's labels, compressed (the
+    # table once, with the method its rows share; the claim by where it is made); (2): the rest
+    assert failed == (
+        "Not reproduced or not upheld (4 verdicts): (1) Table 1, method 4, and the claim of "
+        "Sec. 5; (2) Table 2, method 1."
+    )
+    # the causes by their titles, ranked by rows, with their kind in words and their rows
     assert causes == (
-        "Causes, by the rows they explain: (1) method 4's formula drops a sign "
-        "[error of the paper; 3 rows]; (2) cause not identified [1 row]."
+        "Causes, by rows explained: (1) method 4's formula drops a sign "
+        "(error of the paper, 3 rows); (2) cause not identified (1 row)."
     )
+    # the title once on the first page, the full text in the section's list of causes
+    assert " ".join(s.sentences).count(title) == 1 and detail not in " ".join(s.sentences)
+    assert [(c.title, c.rows, c.details) for c in s.causes] == [(title, 3, (detail,)), ("", 1, ())]
     for internal in ("T1.a", "T2.a", "C1", "phi_deg", "M4"):
         assert internal not in " ".join(s.sentences)
     assert s.status == "Not reproduced"  # both main claims fail
     assert [m.mark for m in s.main_claims] == ["not_Re", "not_Re"]
+    assert s.main_claims[0].basis == "2 of 2 verdicts on it fail: Table 1, method 4"
     # no cause given at all: said so, once
     plain = paper_summary(_verdicts(T2_a="not_reproduced"), audit, PUBLISHED, "demo.yaml")
     assert plain.sentences[2] == "Cause: not identified for the 1 row."
     assert plain.status == "Full reproduction"  # every main claim holds
+
+
+def test_a_group_names_at_most_a_few_labels_then_how_many_more():
+    """Many tables under one cause: compressed ("Tables 1-3"), at most MAX_LABELS labels, then
+    "and N more"; never row by row."""
+    from pipeline.report.labels import MAX_LABELS, capped, compress
+
+    assert compress(["Table 1", "Table 2", "Table 3", "Fig. 5 (3)", "Fig. 6 (4)"]) == [
+        "Tables 1-3",
+        "Figs 5-6",
+    ]
+    labels = ["Table 1", "Sec. 2", "Abstract", "Appendix B", "Eq. 4"]
+    assert capped(labels) == "Table 1, Sec. 2, Abstract and 2 more" and MAX_LABELS == 3
+    items = [{"id": f"X{k}", "label": lab, "kind": "exact", "quantity": "q", "value": "1",
+              "select": {"method": f"M{k}"}} for k, lab in enumerate(labels)]  # fmt: skip
+    published = {"items": items, "claims": [], "main_claims": []}
+    v = pd.DataFrame([{"id": f"X{k}", "kind": "exact", "quantity": "q", "method": f"M{k}",
+                       "published": "1", "reproduced": "2", "verdict": "not_reproduced",
+                       "note": "", "cause_kind": "model", "cause": "our model differs",
+                       "cause_detail": "x"} for k in range(5)])  # fmt: skip
+    no_audit = pd.DataFrame({"equation": [], "status": []})
+    failed = paper_summary(v, no_audit, published, "f").sentences[1]
+    assert failed == (
+        "Not reproduced or not upheld (5 verdicts): Table 1, Sec. 2, Abstract and 2 more."
+    )
+
+
+def test_a_claim_judged_on_several_curves_is_one_row_marked_by_its_worst():
+    """A claim judged per curve (ids <base>/<suffix>) with mixed verdicts is one row of the main
+    text: its verdict for each curve in words, its mark (row status and highlight) that of its
+    worst row; the per-row table keeps every row."""
+    from pipeline.report.grouping import describe, worst
+    from pipeline.report.published import claim_rows_section, claims_section, published_section
+
+    assert describe([("N=1", "not_upheld"), ("N=100", "not_upheld"), ("N=1e4", "not_upheld"),
+                     ("N=1e6", "upheld"), ("N=1e8", "upheld"), ("noise-free", "upheld")]) == (
+        "not upheld at N = 1, 100 and 1e4; upheld at N = 1e6, 1e8 and noise-free"
+    )  # fmt: skip
+    assert worst(["upheld", "not_checkable", "upheld"]) == "not_checkable"
+    assert worst(["not_checkable", "upheld", "not_upheld"]) == "not_upheld"
+    assert worst(["consistent", "reproduced"]) == "consistent"
+
+    import tempfile
+
+    v = _verdicts(C2_simulated="not_upheld").assign(cause_detail="")
+    _caused(v, ["C2/simulated"], "paper_error", "eq. 9 leaves out the drift", "Eq. 9 ... 4437 m.")
+    v.loc[v["id"] == "C2/simulated", "reproduced"] = "4437 m at 2 h"
+    with tempfile.TemporaryDirectory() as d:
+        path = Path(d) / "demo.yaml"
+        path.write_text(yaml.safe_dump(PUBLISHED), encoding="utf-8")
+        (claims,) = [b for b in claims_section("c", v, path).blocks if type(b).__name__ == "Table"]
+        (rows,) = [
+            b for b in claim_rows_section("r", v, path).blocks if type(b).__name__ == "Table"
+        ]
+        numbers = published_section("p", v, path)
+    assert claims.columns == ["claim (where the paper makes it)", "verdict", "cause"]
+    assert [r[0] for r in claims.rows] == ["“Method 4 is the worst” (Sec. 5)",
+                                           "“The error is bounded” (Abstract)"]  # fmt: skip
+    assert claims.rows[1][1:] == [
+        "upheld for the analytic curve; not upheld for the simulated curve",
+        "eq. 9 leaves out the drift",
+    ]
+    assert claims.row_status == ["upheld", "not_upheld"] and claims.highlight == [1]
+    # the same verdict on every curve: still one row, its verdict named for each curve
+    v2 = _verdicts(C2_simulated="not_upheld", C2_analytic="not_upheld")
+    with tempfile.TemporaryDirectory() as d:
+        path = Path(d) / "demo.yaml"
+        path.write_text(yaml.safe_dump(PUBLISHED), encoding="utf-8")
+        (t2,) = [b for b in claims_section("c", v2, path).blocks if type(b).__name__ == "Table"]
+    assert t2.rows[1][1] == "not upheld for the analytic curve and the simulated curve"
+    # every row in the appendix, with its evidence and the cause's full text (HTML note)
+    assert [r[0] for r in rows.rows][1:] == [
+        "“The error is bounded” (Abstract; the analytic curve)",
+        "“The error is bounded” (Abstract; the simulated curve)",
+    ]
+    assert rows.row_status[1:] == ["upheld", "not_upheld"]
+    assert rows.notes[2] == "cause: Eq. 9 ... 4437 m."
+    assert "4437 m at 2 h" in rows.rows[2][1]
+    # no 'why' in the main text's numbers
+    assert all("why" not in b.columns for b in numbers.blocks if type(b).__name__ == "Table")
 
 
 def test_numbers_at_the_printed_precision_plus_two_digits():

@@ -66,24 +66,43 @@ def _figure_names(slug: str) -> list[str]:
     return load_paper(slug).figure_files
 
 
+#: the synthetic causes of failing rows: (kind, title, detail)
+SYNTHETIC_CAUSES = (
+    ("unpublished", "the synthetic run is not given", "The synthetic run is not given (N = 7)."),
+    ("paper_error", "the synthetic formula drops a term", "Eq. 9 drops 2 x (residual 2 x)."),
+)
+
+
 def _synthetic_verdicts(published: dict) -> pd.DataFrame:
+    """Every item and claim with a verdict; every fourth item fails, and every fourth claim is
+    judged on two curves (``/a`` upheld, ``/b`` not upheld); a failing row carries one of two
+    causes (title and full text) or none."""
     items = published.get("items") or published.get("values") or []
     rows = []
+
+    def cause(i: int, verdict: str) -> list[str]:
+        if verdict not in ("not_reproduced", "not_upheld") or i % 3 == 2:
+            return ["", "", ""]
+        return list(SYNTHETIC_CAUSES[i % 2])
+
     for i, it in enumerate(items):
         kind = it.get("kind", "exact")
         good = "consistent" if kind == "statistical" else "reproduced"
         verdict = "not_reproduced" if i % 4 == 3 else good
         method = it.get("method") or it.get("filter") or it.get("scheme") or ""
         rows.append([it["id"], kind, it.get("quantity", ""), method, str(it.get("value", "")),
-                     "1.0", verdict, f"synthetic note {i}"])  # fmt: skip
+                     "1.0", verdict, f"synthetic note {i}", *cause(i, verdict)])  # fmt: skip
     words = ("upheld", "not_upheld", "upheld", "not_checkable")
     for i, c in enumerate(published.get("claims") or []):
-        rows.append([c["id"], "claim", "", "", c.get("text", ""), "evidence", words[i % 4],
-                     c.get("source", "")])  # fmt: skip
+        curves = [("/a", "upheld"), ("/b", "not_upheld")] if i % 4 == 0 else [("", words[i % 4])]
+        for suffix, verdict in curves:
+            rows.append([c["id"] + suffix, "claim", "", "", c.get("text", ""), "evidence",
+                         verdict, c.get("source", ""), *cause(i, verdict)])  # fmt: skip
     return pd.DataFrame(
         rows,
-        columns=["id", "kind", "quantity", "method", "published", "reproduced", "verdict", "note"],
-    )
+        columns=["id", "kind", "quantity", "method", "published", "reproduced", "verdict", "note",
+                 "cause_kind", "cause", "cause_detail"],
+    )  # fmt: skip
 
 
 def _synthetic_tree(base: Path) -> Path:
@@ -458,6 +477,37 @@ def test_first_page_names_no_internal_id(built):
         assert not named, (row.slug, sorted(named)[:5])
         assert len(row.summary.sentences) == 3
         assert row.summary.sentences[0].startswith("Reproduced")
+
+
+#: the most words of a main claim's basis on the first page (its counts, a few labels)
+BASIS_WORDS = 30
+
+
+def test_first_page_sentences_are_short_and_name_each_cause_once(built):
+    """Per paper three sentences, each at most SENTENCE_WORDS words; each cause's title
+    (verdicts.csv ``cause``) once on the first page, in the third sentence, with its number of
+    rows; its full text (``cause_detail``) not there but in the paper's section; a main claim's
+    basis short."""
+    from pipeline.report.labels import MAX_LABELS
+    from pipeline.report.summary import SENTENCE_WORDS
+
+    for row in built.doc.scoreboard:
+        s = row.summary
+        v = pd.read_csv(built.root / "results" / row.slug / "verdicts.csv", dtype=str,
+                        keep_default_na=False)  # fmt: skip
+        for k, sentence in enumerate(s.sentences):
+            assert len(sentence.split()) <= SENTENCE_WORDS, (row.slug, k, sentence)
+        front = " ".join([*s.sentences, *(m.basis for m in s.main_claims)])
+        failing = v[v["verdict"].isin(["not_reproduced", "not_upheld"])]
+        for title, rows in failing[failing["cause"] != ""].groupby("cause"):
+            assert front.count(title) == 1, (row.slug, title)
+            assert f"{title} (" in s.sentences[2] and f"{len(rows)} row" in s.sentences[2]
+        for detail in set(failing["cause_detail"]) - {""}:
+            assert detail not in front
+            assert H.escape(detail) in built.html  # listed in full in the paper's section
+        for m in s.main_claims:
+            assert len(m.basis.split()) <= BASIS_WORDS, (row.slug, m.basis)
+            assert m.basis.count(",") <= 2 * MAX_LABELS, m.basis
 
 
 def test_no_raw_verdict_tokens_in_the_text(built):

@@ -437,13 +437,16 @@ def test_a_cause_explains_only_the_rows_that_fail():
     blank where it passes, and a cause never changes a verdict."""
     from pipeline.verdicts.cause import Cause
 
-    cause = Cause("paper_error", "the paper's eq 21 drops a term")
+    cause = Cause("paper_error", "eq. 21 drops a term", "the paper's eq 21 drops the term 2 x")
     item = {"id": "A", "label": "Table 1", "kind": "exact", "quantity": "x_m", "value": "2.50"}
     passing = engine.item_rows(item, [Found(value=2.504, cause=cause)])[0]
     failing = engine.item_rows(item, [Found(value=2.6, cause=cause)])[0]
-    assert (passing["verdict"], passing["cause_kind"], passing["cause"]) == ("reproduced", "", "")
+    blank = (passing["cause_kind"], passing["cause"], passing["cause_detail"])
+    assert (passing["verdict"], *blank) == ("reproduced", "", "", "")
     assert (failing["verdict"], failing["cause_kind"]) == ("not_reproduced", "paper_error")
-    assert failing["cause"] == cause.text
+    # the title is the grouping key; the full text is its detail
+    assert (failing["cause"], failing["cause_detail"]) == (cause.title, cause.text)
+    assert list(failing)[-3:] == ["cause_kind", "cause", "cause_detail"]
     claim = {"id": "C", "label": "Sec. 2", "text": "x is large", "predicate": {"test": "t"}}
     rows = engine.claim_rows(
         claim,
@@ -457,4 +460,11 @@ def test_a_cause_explains_only_the_rows_that_fail():
         ("upheld", ""),
     ]
     with pytest.raises(ValueError, match="cause kind 'typo'"):
-        Cause("typo", "x")
+        Cause("typo", "x", "x")
+    # a title is a short phrase: too many words, or a sentence, is refused
+    with pytest.raises(ValueError, match="13 words; allowed: a phrase of 1 to 12 words"):
+        Cause("model", " ".join(["word"] * 13), "x")
+    with pytest.raises(ValueError, match="without a final full stop"):
+        Cause("model", "a sentence.", "x")
+    with pytest.raises(ValueError, match="cause text: empty"):
+        Cause("model", "a title", " ")
