@@ -6,15 +6,15 @@ paper) and the table of contents.
 from __future__ import annotations
 
 from pipeline.report.model import Document, MainClaims, ScoreRow
+from pipeline.report.scoreboard import AUDIT_WORDS, CLAIM_WORDS, NUMBER_WORDS
 from pipeline.report.typst_blocks import BlockRenderer
 from pipeline.report.typst_source import breakable, escape
 from pipeline.report.vocabulary import word
 
 __all__ = ["contents", "title_page"]
 
-_AUDIT = ("match", "differs", "not_checkable")
-_NUMBERS = ("reproduced", "consistent", "not_reproduced")
-_CLAIMS = ("upheld", "not_upheld", "not_checkable")
+# the scoreboard's words, in its order (one list for the HTML, the PDF and the counts)
+_AUDIT, _NUMBERS, _CLAIMS = AUDIT_WORDS, NUMBER_WORDS, CLAIM_WORDS
 
 
 def _tone(status: str) -> str:
@@ -40,10 +40,13 @@ def _paper(r: BlockRenderer, row: ScoreRow) -> list[str]:
 def _counts(r: BlockRenderer, rows: list[ScoreRow]) -> str:
     head1 = (
         "table.cell(rowspan: 2, align: left + bottom)[Paper], "
-        "table.cell(colspan: 3)[Equations audited], "
-        "table.cell(colspan: 3)[Published numbers], "
-        "table.cell(colspan: 3)[Claims]"
+        f"table.cell(colspan: {len(_AUDIT)})[Equations audited], "
+        f"table.cell(colspan: {len(_NUMBERS)})[Published numbers], "
+        f"table.cell(colspan: {len(_CLAIMS)})[Claims]"
     )
+    words = (*_AUDIT, *_NUMBERS, *_CLAIMS)
+    differs = words.index("differs")
+    failing = {i for i, w in enumerate(words) if w in ("not_reproduced", "not_upheld")}
     sub = [word(w) for w in (*_AUDIT, *_NUMBERS, *_CLAIMS)]
     head2 = ", ".join("[" + escape(s).replace(" ", " \\ ") + "]" for s in sub)
     body = []
@@ -55,7 +58,7 @@ def _counts(r: BlockRenderer, rows: list[ScoreRow]) -> str:
         classified = any(n for k, n in row.differs.items() if k)
         shown = []
         for i, c in enumerate(cells):
-            if i == 1 and c != "0":  # a difference is red only as an error of the paper
+            if i == differs and c != "0":  # a difference is red only as an error of the paper
                 colour = "bad" if errors else "partial"
                 note = (
                     f"{errors} {'error' if errors == 1 else 'errors'} of the paper"
@@ -65,14 +68,14 @@ def _counts(r: BlockRenderer, rows: list[ScoreRow]) -> str:
                 shown.append(
                     f'[#text(fill: {colour}, weight: "bold")[{c}] \\ #text(size: 6.5pt)[{note}]]'
                 )
-            elif i in (5, 7) and c != "0":
+            elif i in failing and c != "0":
                 shown.append(f'text(fill: bad, weight: "bold")[{c}]')
             else:
                 shown.append(f"[{c}]")
         body.append(f"[{r.anchor_link(row.anchor, row.title)}], " + ", ".join(shown))
     return (
         "#text(size: 8pt, table(\n"
-        "  columns: (1fr,) + (auto,) * 9,\n"
+        f"  columns: (1fr,) + (auto,) * {len(words)},\n"
         "  align: (x, y) => if x == 0 { left } else { center },\n"
         "  fill: (x, y) => if y < 2 { headfill },\n"
         f"  table.header({head1}, {head2}),\n  " + ",\n  ".join(body) + ",\n))"

@@ -135,7 +135,9 @@ def test_the_synthetic_paper_runs_end_to_end(tmp_path):
     page = (tmp_path / "reports" / f"{SLUG}.html").read_text(encoding="utf-8")
     assert "The period of a simple pendulum" in page and "C1.isochronous" in page
     notebook = (tmp_path / "reports" / "notebooks" / f"{SLUG}.html").read_text(encoding="utf-8")
-    assert "\\sin{\\left(\\theta" in notebook  # eq. 1 as the executed cell shows it
+    # eq. 1 as the executed cell shows it: MathML built offline, no LaTeX left for a script
+    assert "<math" in notebook and "<mi>sin</mi>" in notebook and "\u03b8" in notebook
+    assert "\\sin" not in notebook
     combined = (tmp_path / "reports" / "reproduction.html").read_text(encoding="utf-8")
     assert "The period of a simple pendulum" in combined
     assert (tmp_path / "reports" / "reproduction.pdf").read_bytes()[:5] == b"%PDF-"
