@@ -1,7 +1,8 @@
 # Reproducible environment + workflow entry points.
 #
 #   make venv       create .venv from environment.lock (hash-checked, Python 3.11 only)
-#   make test       run the test suite            (PYTEST_ARGS="-k foo -x" to pass options);
+#   make test       run the test suite            (PYTEST_ARGS="-k foo -x" to pass options;
+#                   TEST_WORKERS=2 pytest-xdist workers by default, 0 for one process);
 #                   first installs the system tools the report tests drive (system-deps)
 #   make reproduce  run the Snakemake workflow    (CORES=2 by default)
 #   make lint       ruff check + ruff format --check, snakefmt --check, snakemake --lint
@@ -18,6 +19,8 @@ VENV        := .venv
 STAMP       := $(VENV)/.stamp
 CORES       ?= 2
 PYTEST_ARGS ?=
+# pytest-xdist workers; each test file runs whole in one worker (its module fixtures once)
+TEST_WORKERS ?= 2
 
 # Build backend installed (hash-checked, from the lock) before everything else, so the one
 # sdist-only dependency can be built with --no-build-isolation from pinned, hashed files.
@@ -108,7 +111,7 @@ system-deps:
 	fi
 
 test: $(STAMP) system-deps
-	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pytest -q $(PYTEST_ARGS)
+	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pytest -q -n $(TEST_WORKERS) --dist loadfile $(PYTEST_ARGS)
 
 bench: $(STAMP)
 	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.altimeter_attitude.benchmark

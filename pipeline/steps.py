@@ -29,6 +29,7 @@ from pathlib import Path
 from typing import Any
 
 from pipeline.paper import StepEntry
+from pipeline.script_log import logged
 
 __all__ = ["plain", "resolve", "run_step", "undeclared_reads", "watch_reads"]
 
@@ -118,20 +119,16 @@ def run_step(smk: Any) -> None:
     params["wildcards"] = dict(smk.wildcards.items())
     inputs: Mapping[str, Any] = plain(smk.input)
     outputs: Mapping[str, Any] = plain(smk.output)
-    with open(smk.log[0], "w", encoding="utf-8") as log_file:
-        sys.stderr = log_file
+    with logged(smk.log[0], written=_flat(outputs)) as log_file:
 
         def log(message: str) -> None:
             print(message, file=log_file, flush=True)
 
         call: Callable[..., None] = entry
-        try:
-            call(inputs, outputs, params, log)
-        finally:
-            sys.stderr = sys.__stderr__
+        call(inputs, outputs, params, log)
         extra = undeclared_reads(opened, _flat(inputs) + _flat(outputs), Path.cwd())
-    if extra:
-        raise ValueError(
-            f"step {smk.rule} read files that are not inputs of its rule (declare them in "
-            f"the paper's Step.inputs, so that an edit reruns the step): {extra}"
-        )
+        if extra:
+            raise ValueError(
+                f"step {smk.rule} read files that are not inputs of its rule (declare them in "
+                f"the paper's Step.inputs, so that an edit reruns the step): {extra}"
+            )

@@ -26,6 +26,8 @@ from pathlib import Path
 
 import pytest
 
+from tests.hang_guard import HANG_GUARD_S
+
 CHROMIUM = Path("/usr/bin/chromium")
 REQUIRED = os.environ.get("REQUIRE_SYSTEM_DEPS") == "1"
 
@@ -45,7 +47,7 @@ def _child_fds(read_fd: int, write_fd: int) -> None:
 def chromium_load(
     url: str,
     screenshot: Path | None = None,
-    timeout: float = 90.0,
+    timeout: float = HANG_GUARD_S,
     offline: bool = False,
     requests: list[str] | None = None,
 ) -> list[str]:

@@ -3,21 +3,27 @@
 from __future__ import annotations
 
 import importlib
+import os
 from collections.abc import Callable
 from functools import cache
 from pathlib import Path
 
 import pytest
 
-from tests.workflow_harness import ROOT, have_results, reduced_run
+from tests.workflow_harness import ROOT, have_results, once_across_workers, reduced_run
 
 
 @pytest.fixture(scope="session")
 def workflow_run(tmp_path_factory) -> Path:
     """The root of a reduced copy of the repository in which the whole default workflow has run
-    (once per test session; the modules that use it share it and must not change it, except
-    temporarily)."""
-    return reduced_run(tmp_path_factory.mktemp("repo"))
+    (once per test session, shared by every pytest-xdist worker: the first worker to ask runs
+    it, the others wait for it). Tests read it and never change it: a test that needs to
+    change it copies it first."""
+    if not os.environ.get("PYTEST_XDIST_WORKER"):
+        return reduced_run(tmp_path_factory.mktemp("repo"))
+    # the workers' base temporary directories share this parent
+    shared = tmp_path_factory.getbasetemp().parent
+    return once_across_workers(shared / "workflow-run", reduced_run)
 
 
 @pytest.fixture(scope="session")

@@ -14,8 +14,10 @@ from pathlib import Path
 import nbformat
 from nbclient import NotebookClient
 
+from tests.hang_guard import HANG_GUARD_S
+
 ROOT = Path(__file__).resolve().parents[1]
-TIMEOUT_S = 300
+TIMEOUT_S = HANG_GUARD_S
 
 
 def read(path: Path) -> nbformat.NotebookNode:

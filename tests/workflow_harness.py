@@ -6,6 +6,8 @@ the session fixtures ``workflow_run`` and ``results_repo`` of ``tests/conftest.p
 
 from __future__ import annotations
 
+import fcntl
+import hashlib
 import os
 import re
 import shutil
@@ -16,6 +18,8 @@ from pathlib import Path
 
 import pytest
 import yaml
+
+from tests.hang_guard import HANG_GUARD_S
 
 ROOT = Path(__file__).resolve().parents[1]
 SLUGS = tuple(
@@ -39,7 +43,7 @@ def have_results(root: Path = ROOT) -> bool:
 NEEDS_RUN = [] if have_results(ROOT) else [pytest.mark.slow, pytest.mark.workflow]
 
 
-def snakemake(*args: str, cwd: Path, timeout: float = 900) -> subprocess.CompletedProcess:
+def snakemake(*args: str, cwd: Path, timeout: float = HANG_GUARD_S) -> subprocess.CompletedProcess:
     """Run snakemake in its own session; on timeout kill the whole group (its jobs too)."""
     env = {**os.environ, "PYTHONPATH": str(cwd)}
     cmd = [sys.executable, "-m", "snakemake", *args]
@@ -126,6 +130,40 @@ def reduced_run(repo: Path) -> Path:
     _reduce_paper(scenarios / "paper.yaml")
     _reduce_altimeter(repo)
     assert not (repo / "results").exists()
-    r = snakemake("--cores", "2", "--quiet", cwd=repo, timeout=600)
+    r = snakemake("--cores", "2", "--quiet", cwd=repo, timeout=HANG_GUARD_S)
     assert r.returncode == 0, (r.stdout + r.stderr)[-5000:]
     return repo
+
+
+def once_across_workers(dest: Path, build) -> Path:
+    """``build(dest)`` run by exactly one of the pytest-xdist workers that call this with the same
+    ``dest``; the others block on a file lock until it is done and get ``dest``. A build that
+    failed fails every caller with its message (it is not retried)."""
+    dest.parent.mkdir(parents=True, exist_ok=True)
+    done, failed = dest.with_name(dest.name + ".done"), dest.with_name(dest.name + ".failed")
+    with open(dest.with_name(dest.name + ".lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not done.exists() and not failed.exists():
+            try:
+                dest.mkdir()
+                build(dest)
+            except BaseException as exc:
+                failed.write_text(f"{type(exc).__name__}: {exc}"[-5000:], encoding="utf-8")
+                raise
+            done.write_text("", encoding="utf-8")
+    if failed.exists():
+        pytest.fail(f"the shared build of {dest} failed in another worker:\n{failed.read_text()}")
+    return dest
+
+
+def output_digests(repo: Path) -> dict[str, str]:
+    """sha256 of every file under results/ and reports/ (benchmark files and job logs, which hold
+    wall-clock timings by design, excepted), by path relative to ``repo``."""
+    out = {}
+    for top in ("results", "reports"):
+        for f in sorted(p for p in (repo / top).rglob("*") if p.is_file()):
+            rel = f.relative_to(repo).as_posix()
+            if "/benchmarks/" in rel or "/logs/" in rel:  # wall-clock timings and job logs
+                continue
+            out[rel] = hashlib.sha256(f.read_bytes()).hexdigest()
+    return out

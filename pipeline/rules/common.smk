@@ -63,11 +63,19 @@ def step_modules(paper, step):
     return modules
 
 
+def kept(path):
+    """``path`` as an output that a failed job never deletes (Snakemake's ``update`` flag: the
+    previous version is backed up before the job and restored if the job fails). Every script
+    replaces each of its outputs or fails (``pipeline.script_log.logged`` checks it), so an
+    old file is never taken for a new one."""
+    return update(path)
+
+
 def tagged(path, paper, subcategory, caption, **labels):
     """``path`` marked for the Snakemake report: category = the paper's slug, one caption per
     kind of output (``reports/snakemake/<caption>.rst``), ``labels`` shown beside it."""
     return report(
-        path,
+        kept(path),
         caption=f"{CAPTIONS}/{caption}.rst",
         category=paper,
         subcategory=subcategory,
@@ -90,9 +98,11 @@ def step_outputs(paper, step):
             labels = {"scenario": "{scenario}"} if step.per_scenario else {}
             out[name] = tagged(value, paper.slug, subcategory, caption, **labels)
         elif isinstance(value, list):
-            out[name] = [tagged_figure(v, paper) if _is_figure(v, paper) else v for v in value]
+            out[name] = [
+                tagged_figure(v, paper) if _is_figure(v, paper) else kept(v) for v in value
+            ]
         else:
-            out[name] = tagged_figure(value, paper) if _is_figure(value, paper) else value
+            out[name] = tagged_figure(value, paper) if _is_figure(value, paper) else kept(value)
     return out
 
 

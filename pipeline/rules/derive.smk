@@ -7,7 +7,7 @@ rule codegen_check:
         code=derive_code("codegen"),
         generated="pipeline/generated/{paper}.py",
     output:
-        f"{RESULTS}/{{paper}}/codegen_check.txt",
+        kept(f"{RESULTS}/{{paper}}/codegen_check.txt"),
     log:
         f"{RESULTS}/{{paper}}/logs/codegen_check.log",
     benchmark:
@@ -25,12 +25,12 @@ rule audit:
         code=derive_code("audit"),
     output:
         csv=report(
-            f"{RESULTS}/{{paper}}/equation_audit.csv",
+            kept(f"{RESULTS}/{{paper}}/equation_audit.csv"),
             caption=f"{CAPTIONS}/audit.rst",
             category="{paper}",
             subcategory="Equation audit",
         ),
-        math=f"{RESULTS}/{{paper}}/equation_math.json",
+        math=kept(f"{RESULTS}/{{paper}}/equation_math.json"),
     log:
         f"{RESULTS}/{{paper}}/logs/audit.log",
     benchmark:
@@ -50,7 +50,7 @@ rule notebook:
         notebook="notebooks/{paper}.ipynb",
     output:
         report(
-            f"{REPORTS}/notebooks/{{paper}}.html",
+            kept(f"{REPORTS}/notebooks/{{paper}}.html"),
             caption=f"{CAPTIONS}/notebook.rst",
             category="{paper}",
             subcategory="Pages",

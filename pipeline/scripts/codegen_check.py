@@ -6,7 +6,7 @@ from pathlib import Path
 from pipeline.atomic import write_text
 from pipeline.script_log import logged
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], written=snakemake.output):  # noqa: F821
     generator = importlib.import_module(snakemake.params.generator)  # noqa: F821
     generated = Path(snakemake.input.generated)  # noqa: F821
     if generated.read_text(encoding="utf-8") != generator.source():

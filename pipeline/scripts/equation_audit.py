@@ -8,7 +8,7 @@ from pipeline.atomic import write_csv, write_json
 from pipeline.columns import AUDIT_COLUMNS
 from pipeline.script_log import logged
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], written=snakemake.output):  # noqa: F821
     module = importlib.import_module(snakemake.params.audit)  # noqa: F821
     frame, records = audit_outputs(module.checks())
     write_csv(snakemake.output.csv, frame, AUDIT_COLUMNS)  # noqa: F821

@@ -6,5 +6,5 @@ from pipeline.atomic import write_text
 from pipeline.notebook_html import build
 from pipeline.script_log import logged
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], written=snakemake.output):  # noqa: F821
     write_text(snakemake.output[0], build(snakemake.input.notebook))  # noqa: F821

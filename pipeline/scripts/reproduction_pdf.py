@@ -7,7 +7,7 @@ from pipeline.report.document import build_document
 from pipeline.report.reproduction_pdf import write_pdf
 from pipeline.script_log import logged
 
-with logged(snakemake.log[0]):  # noqa: F821
+with logged(snakemake.log[0], written=snakemake.output):  # noqa: F821
     t0 = time.perf_counter()
     root = Path.cwd()
     doc = build_document(

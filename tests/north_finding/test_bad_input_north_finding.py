@@ -20,6 +20,7 @@ from pipeline.north_finding import readings as rd
 from pipeline.north_finding.paper import PAPER as NF_PAPER
 from pipeline.north_finding.scenario import ROOT, load_scenario
 from pipeline.registry import validate_scenarios
+from tests.hang_guard import HANG_GUARD_S
 
 PAPER = ROOT / "config" / "scenarios" / "north_finding" / "paper.yaml"
 EXAMPLE_CSV = ROOT / "config" / "scenarios" / "north_finding" / "data" / "example_readings.csv"
@@ -207,7 +208,7 @@ def test_cli_estimate_bad_latitude_exits_2_and_writes_nothing(tmp_path):
         env={**os.environ, "PYTHONPATH": str(ROOT)},
         capture_output=True,
         text=True,
-        timeout=120,
+        timeout=HANG_GUARD_S,
     )  # fmt: skip
     assert r.returncode == 2
     assert "lat_deg" in r.stderr and "95" in r.stderr and "< 90" in r.stderr

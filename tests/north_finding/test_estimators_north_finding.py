@@ -38,6 +38,7 @@ from pipeline.north_finding import estimators as est
 from pipeline.north_finding import readings as rd
 from pipeline.north_finding.run import OUTPUTS, run_scenario
 from pipeline.north_finding.scenario import ROOT, Scenario, load_scenario
+from tests.hang_guard import HANG_GUARD_S
 
 PAPER = ROOT / "config" / "scenarios" / "north_finding" / "paper.yaml"
 ALL_SOURCES = ("scale_factor", "misalignment", "bias", "noise")
@@ -424,7 +425,7 @@ def _cli(*args: str, cwd: Path) -> subprocess.CompletedProcess:
         env=env,
         capture_output=True,
         text=True,
-        timeout=120,
+        timeout=HANG_GUARD_S,
     )
 
 

@@ -12,6 +12,7 @@ import pytest
 from pipeline.config import MAX_BYTES, ConfigError, load_yaml, validate
 from pipeline.registry import validate_workflow_config
 from pipeline.scenarios import scenario_names
+from tests.hang_guard import HANG_GUARD_S
 from tests.workflow_harness import ROOT, copy_repo, snakemake
 
 GOOD_CONFIG = (ROOT / "config" / "config.yaml").read_text(encoding="utf-8")
@@ -205,7 +206,7 @@ def test_snakemake_reports_a_bad_config_in_one_line_before_any_job(tmp_path):
         ("reports_dir: reports", "reports_dir: reports\nreports_dir: x", "duplicate key"),
     ]:
         config.write_text(GOOD_CONFIG.replace(old, new, 1), encoding="utf-8")
-        proc = snakemake("-n", "--cores", "1", cwd=repo, timeout=300)
+        proc = snakemake("-n", "--cores", "1", cwd=repo, timeout=HANG_GUARD_S)
         out = proc.stdout + proc.stderr
         assert proc.returncode == 1, out
         assert piece in out and "config/config.yaml" in out
@@ -214,7 +215,7 @@ def test_snakemake_reports_a_bad_config_in_one_line_before_any_job(tmp_path):
     scenario = repo / "config" / "scenarios" / "north_finding" / "bad.yml"
     config.write_text(GOOD_CONFIG, encoding="utf-8")
     scenario.write_text("x: 1\n", encoding="utf-8")
-    proc = snakemake("-n", "--cores", "1", cwd=repo, timeout=300)
+    proc = snakemake("-n", "--cores", "1", cwd=repo, timeout=HANG_GUARD_S)
     out = proc.stdout + proc.stderr
     assert proc.returncode == 1 and "bad.yml: file name ends in .yml" in out, out
     assert "Traceback" not in out and 'File "' not in out, out
@@ -223,7 +224,7 @@ def test_snakemake_reports_a_bad_config_in_one_line_before_any_job(tmp_path):
     published = repo / "config" / "published" / "platform_drift.yaml"
     text = published.read_text(encoding="utf-8")
     published.write_text(text.replace("kind: approximate", "kind: roughly", 1), encoding="utf-8")
-    proc = snakemake("-n", "--cores", "1", cwd=repo, timeout=300)
+    proc = snakemake("-n", "--cores", "1", cwd=repo, timeout=HANG_GUARD_S)
     out = proc.stdout + proc.stderr
     assert proc.returncode == 1 and "config/published/platform_drift.yaml" in out, out
     assert "'roughly'" in out and "Traceback" not in out and 'File "' not in out, out

@@ -14,6 +14,7 @@ from pipeline.code_inputs import module_closure
 from pipeline.config import ConfigError
 from pipeline.paper import Paper, Step
 from pipeline.registry import context, load_paper, load_papers
+from tests.hang_guard import HANG_GUARD_S
 from tests.workflow_harness import ROOT, copy_repo, snakemake
 
 #: every paper plug-in of this checkout, found on disk (not a list typed here)
@@ -168,7 +169,7 @@ def _job_counts(output: str) -> dict[str, int]:
 def test_dry_run_plans_every_step_of_every_paper():
     """``snakemake -n --forceall`` plans, per paper, one job per step (per scenario for a
     per-scenario step) and the shared audit, codegen check and notebook once per paper."""
-    r = snakemake("-n", "--cores", "1", "--forceall", "--nolock", cwd=ROOT, timeout=900)
+    r = snakemake("-n", "--cores", "1", "--forceall", "--nolock", cwd=ROOT, timeout=HANG_GUARD_S)
     assert r.returncode == 0, r.stderr[-3000:]
     counts = _job_counts(r.stdout + r.stderr)
     papers = load_papers(CONFIG["papers"])
@@ -190,7 +191,7 @@ def test_one_paper_in_config_plans_only_that_paper(tmp_path):
     cfg = {k: v for k, v in CONFIG.items() if k not in CONFIG["papers"] or k == slug}
     cfg["papers"] = [slug]
     (tmp_path / "config" / "config.yaml").write_text(yaml.safe_dump(cfg), encoding="utf-8")
-    r = snakemake("-n", "--cores", "1", "--forceall", cwd=tmp_path, timeout=900)
+    r = snakemake("-n", "--cores", "1", "--forceall", cwd=tmp_path, timeout=HANG_GUARD_S)
     out = r.stdout + r.stderr
     assert r.returncode == 0, out[-3000:]
     counts = _job_counts(out)

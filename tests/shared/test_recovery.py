@@ -14,7 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from tests.workflow_harness import ROOT, snakemake
+from tests.hang_guard import HANG_GUARD_S
+from tests.workflow_harness import ROOT, output_digests, snakemake
 
 pytestmark = [pytest.mark.slow, pytest.mark.workflow]
 
@@ -69,7 +70,7 @@ def test_make_reproduce_recovers_after_kill_9(workflow_run, tmp_path):
     shutil.rmtree(repo / "results" / "platform_drift")
     (repo / "reports" / "platform_drift.html").unlink()
     proc = _make(repo, "reproduce", "CORES=1")
-    deadline = time.monotonic() + 600  # a bound on a hung run, not a speed limit
+    deadline = time.monotonic() + HANG_GUARD_S  # a bound on a hung run, not a speed limit
     while not _incomplete(repo) and proc.poll() is None and time.monotonic() < deadline:
         time.sleep(0.02)
     killed = proc.poll() is None
@@ -83,11 +84,11 @@ def test_make_reproduce_recovers_after_kill_9(workflow_run, tmp_path):
     )
 
     # a plain Snakemake call now refuses (locked): what the user met before the fix
-    locked = snakemake("--cores", "1", cwd=repo, timeout=900)  # a dry run takes no lock
+    locked = snakemake("--cores", "1", cwd=repo, timeout=HANG_GUARD_S)  # a dry run takes no lock
     assert locked.returncode != 0 and "lock" in (locked.stdout + locked.stderr).lower()
 
     again = _make(repo, "reproduce", "CORES=1")
-    out, _ = again.communicate(timeout=1800)
+    out, _ = again.communicate(timeout=HANG_GUARD_S)
     assert again.returncode == 0, out[-4000:]
     assert "releasing it" in out
     assert _digests(repo) == before
@@ -118,8 +119,26 @@ def test_a_second_make_reproduce_in_the_same_checkout_is_refused(tmp_path):
                 break
             time.sleep(0.01)
         second = _make(repo, "reproduce")
-        out, _ = second.communicate(timeout=120)
+        out, _ = second.communicate(timeout=HANG_GUARD_S)
         assert second.returncode != 0 and "another 'make reproduce' is running" in out, out
     finally:
         os.killpg(holder.pid, signal.SIGKILL)
         holder.wait()
+
+
+def test_a_failing_step_keeps_the_previous_outputs(workflow_run, tmp_path):
+    """A step that fails (here: every reader of a results file that was replaced by garbage)
+    leaves its previous outputs in place, byte for byte, and says so in one line per job;
+    nothing else under results/ or reports/ changes."""
+    repo = tmp_path / "repo"
+    shutil.copytree(workflow_run, repo, symlinks=True)
+    broken = repo / "results" / "north_finding" / "paper" / "estimates.csv"
+    before = output_digests(repo)
+    broken.write_text("this is not,the estimates\n\x00\n", encoding="utf-8")
+    before[broken.relative_to(repo).as_posix()] = hashlib.sha256(broken.read_bytes()).hexdigest()
+    r = snakemake("--cores", "1", "--keep-going", cwd=repo, timeout=HANG_GUARD_S)
+    out = r.stdout + r.stderr
+    assert r.returncode != 0, out[-3000:]
+    assert "Restored previous version of results/north_finding/verdicts.csv" in out, out[-4000:]
+    assert "Traceback" not in out, out[-4000:]
+    assert output_digests(repo) == before

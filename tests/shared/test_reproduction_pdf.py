@@ -32,6 +32,7 @@ from pipeline.report.document import (
     Section,
     Table,
 )
+from tests.hang_guard import HANG_GUARD_S
 from tests.workflow_harness import NEEDS_RUN
 
 typst = pytest.importorskip("typst")
@@ -52,7 +53,7 @@ EMBEDDED_FONTS = ("LibertinusSerif", "NewCM", "DejaVuSansMono")
 # helpers
 # ------------------------------------------------------------------------------------------
 def _run(*cmd: str) -> subprocess.CompletedProcess:
-    return subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=HANG_GUARD_S)
 
 
 def page_count(pdf: Path) -> int:
@@ -319,7 +320,7 @@ def test_rebuild_in_another_process_is_byte_identical(report, tmp_path, _):
         capture_output=True,
         text=True,
         env=env,
-        timeout=600,
+        timeout=HANG_GUARD_S,
     )
     assert r.returncode == 0, r.stderr[-3000:]
     assert again.read_bytes() == pdf.read_bytes()

@@ -20,6 +20,7 @@ import pytest
 import yaml
 
 from pipeline.columns import AUDIT_COLUMNS
+from tests.hang_guard import HANG_GUARD_S
 from tests.workflow_harness import ROOT, copy_repo, snakemake
 
 SYNTHETIC = ROOT / "tests" / "synthetic_paper"
@@ -71,7 +72,7 @@ def test_a_fourth_paper_plans_beside_the_others(tmp_path):
     copy_repo(tmp_path)
     papers = [*yaml.safe_load((ROOT / "config" / "config.yaml").read_text())["papers"], SLUG]
     install(tmp_path, papers)
-    r = snakemake("-n", "--cores", "1", "--forceall", cwd=tmp_path, timeout=900)
+    r = snakemake("-n", "--cores", "1", "--forceall", cwd=tmp_path, timeout=HANG_GUARD_S)
     out = r.stdout + r.stderr
     assert r.returncode == 0, out[-3000:]
     for rule in (f"{SLUG}_simulate", f"{SLUG}_verdicts", f"{SLUG}_figures", f"{SLUG}_report"):
@@ -91,7 +92,7 @@ def test_the_synthetic_papers_audit_gives_its_wrong_equation_a_kind(tmp_path):
         env={**os.environ, "PYTHONPATH": str(tmp_path)},
         capture_output=True,
         text=True,
-        timeout=600,
+        timeout=HANG_GUARD_S,
     )
     assert r.returncode == 0, r.stderr[-3000:]
     audit = pd.read_csv(out, dtype=str, keep_default_na=False)
@@ -105,7 +106,7 @@ def test_the_synthetic_papers_audit_gives_its_wrong_equation_a_kind(tmp_path):
 def test_the_synthetic_paper_runs_end_to_end(tmp_path):
     copy_repo(tmp_path)
     install(tmp_path, [SLUG])
-    r = snakemake("--cores", "2", cwd=tmp_path, timeout=1200)
+    r = snakemake("--cores", "2", cwd=tmp_path, timeout=HANG_GUARD_S)
     assert r.returncode == 0, (r.stdout + r.stderr)[-5000:]
     results = tmp_path / "results" / SLUG
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -14,6 +15,7 @@ import yaml
 
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_FILE_COLUMNS, VERDICT_KINDS, VERDICTS
 from pipeline.north_finding.columns import ESTIMATE_COLUMNS
+from tests.hang_guard import HANG_GUARD_S
 from tests.workflow_harness import ROOT, snakemake
 
 pytestmark = pytest.mark.workflow
@@ -81,8 +83,9 @@ def test_estimates_of_both_scenarios(workflow_run):
 
 
 @pytest.mark.slow
-def test_bad_scenario_stops_the_workflow_before_any_job(workflow_run):
-    repo = workflow_run
+def test_bad_scenario_stops_the_workflow_before_any_job(workflow_run, tmp_path):
+    repo = tmp_path / "repo"  # a copy: other workers read workflow_run meanwhile
+    shutil.copytree(workflow_run, repo, symlinks=True)
     scenarios = repo / "config" / "scenarios" / "north_finding"
     raw = yaml.safe_load((scenarios / "paper.yaml").read_text(encoding="utf-8"))
     raw["site"]["lat_deg"] = 95
@@ -90,7 +93,7 @@ def test_bad_scenario_stops_the_workflow_before_any_job(workflow_run):
     bad.write_text(yaml.safe_dump(raw), encoding="utf-8")
     before = {p: p.stat().st_mtime_ns for p in (repo / "results").rglob("*") if p.is_file()}
     try:
-        r = snakemake("--cores", "1", "--forceall", cwd=repo, timeout=300)
+        r = snakemake("--cores", "1", "--forceall", cwd=repo, timeout=HANG_GUARD_S)
     finally:
         bad.unlink()
     assert r.returncode != 0
@@ -134,7 +137,7 @@ def test_altimeter_attitude_outputs(workflow_run):
 # Snakemake ecosystem: lint, snakefmt, --report, the conda environment of the rules
 # --------------------------------------------------------------------------------------------
 def test_snakemake_lint_is_clean():
-    r = snakemake("--lint", cwd=ROOT, timeout=300)
+    r = snakemake("--lint", cwd=ROOT, timeout=HANG_GUARD_S)
     out = r.stdout + r.stderr
     assert r.returncode == 0, out[-3000:]
     assert "Lints for" not in out and "good condition" in out, out[-3000:]
@@ -147,7 +150,7 @@ def test_snakefiles_are_snakefmt_formatted():
         cwd=ROOT,
         capture_output=True,
         text=True,
-        timeout=120,
+        timeout=HANG_GUARD_S,
     )
     assert r.returncode == 0, (r.stdout + r.stderr)[-3000:]
 
@@ -168,7 +171,7 @@ def test_snakemake_report_has_a_category_per_paper(workflow_run, tmp_path):
     """``snakemake --report`` builds; every paper is a category holding its figures (labelled
     with the paper's figure numbers), audit, verdicts and pages; the combined reports too."""
     out = tmp_path / "snakemake.html"
-    r = snakemake("--report", str(out), cwd=workflow_run, timeout=600)
+    r = snakemake("--report", str(out), cwd=workflow_run, timeout=HANG_GUARD_S)
     assert r.returncode == 0, (r.stdout + r.stderr)[-3000:]
     html = out.read_text(encoding="utf-8")
     papers = yaml.safe_load((workflow_run / "config" / "config.yaml").read_text())["papers"]
