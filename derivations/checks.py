@@ -7,14 +7,26 @@ written by hand:
 * ``match``: printed - derived is zero, symbolically or, where SymPy cannot
   simplify it, numerically at 40 seeded random points (relative 1e-9);
 * ``differs``: it is not; the row gives the simplified residual, the judgement
-  recorded with the check (``if_differs``: what is correct, and the evidence) and
-  its kind (``differs_kind``, one of ``pipeline.columns.DIFFERS_KINDS``):
-  ``paper_error`` (the paper's printed formula is wrong), ``text_artefact`` (the
-  OCR or layout of the seed text garbled it) or ``convention`` (an approximation
-  or convention the paper chose). A difference without a recorded kind is an
-  error, not a row: every ``differs`` is reviewed;
+  recorded with the check (``if_differs``: what is correct, and the evidence for the kind,
+  first, in one sentence) and its kind (one of ``pipeline.columns.DIFFERS_KINDS``). The kind
+  is not written by hand: the check names what the seed text shows (its ``discrepancy``, a
+  key of ``derivations.discrepancies.DISCREPANCIES``) and ``kind_of`` gives the kind, so one rule classifies
+  every paper. A difference without a recorded discrepancy is an error, not a row: every
+  ``differs`` is reviewed;
 * ``not_checkable``: nothing to compare (equation absent from the seed text, or
   a definition), with the reason.
+
+The rule (the seed text is the authority for what a paper prints, but its OCR can garble
+subscripts, signs, primes and bars), in the order of ``derivations.discrepancies``:
+``convention`` when the printed form is right in a convention or approximation the paper
+chose; else ``paper_error`` when the printed mathematics, legible and coherent, is wrong
+beyond one mark (a term, factor or operator), or by one mark that recurs or is carried into
+later equations (an OCR misread does not repeat itself), so that used as printed it gives
+wrong numbers; else ``text_artefact`` when the seed text is visibly broken where it differs
+(stacked lines read as a fraction, a displaced line) and undoing the break gives the derived
+form; else ``unclear_from_text``: one mark, once (a sign, exponent, transpose, subscript, one
+symbol for another, a bar's extent), of the kind this OCR misreads, so the text cannot tell
+the paper's slip from the OCR's. A row with several discrepancies takes the first that applies.
 
 Printed and derived forms may be expressions, matrices or tuples (compared
 element by element). Both are written as "left side minus right side" or as the
@@ -25,14 +37,14 @@ right side of ``quantity = ...``, whichever the check states.
 >>> run_check(Check("1", printed=sp.sin(x) ** 2, derived=1 - sp.cos(x) ** 2)).status
 'match'
 >>> row = run_check(
-...     Check("2", printed=2 * x, derived=3 * x, differs_kind="paper_error", if_differs="typo")
+...     Check("2", printed=2 * x, derived=3 * x, discrepancy="wrong_term", if_differs="typo")
 ... )
 >>> row.status, row.residual, row.note, row.kind
 ('differs', '-x', 'typo', 'paper_error')
 >>> run_check(Check("3", printed=2 * x, derived=3 * x))  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 ...
-ValueError: eq. 3: printed and derived forms differ (residual -x) but ... give one of paper_error...
+ValueError: eq. 3: printed and derived forms differ (residual -x) but ... give one of approximation (convention)...
 """
 
 from __future__ import annotations
@@ -43,6 +55,8 @@ from typing import Any
 
 import numpy as np
 import sympy as sp
+
+from derivations.discrepancies import DISCREPANCIES, kind_of
 
 __all__ = [
     "Check",
@@ -55,6 +69,8 @@ __all__ = [
     "audit_outputs",
     "math_record",
     "STATUSES",
+    "DISCREPANCIES",
+    "kind_of",
 ]
 
 STATUSES = ("match", "differs", "not_checkable")
@@ -69,43 +85,50 @@ def _kinds() -> dict[str, str]:
     return DIFFERS_KINDS
 
 
-def _allowed_kinds() -> str:
-    return ", ".join(f"{kind} ({label})" for kind, label in _kinds().items())
+def _allowed() -> str:
+    return ", ".join(f"{d} ({kind})" for d, (kind, _) in DISCREPANCIES.items())
 
 
 @dataclass(frozen=True)
 class Check:
     """One equation of the paper (``equation`` is its number as a string: '47', '47.E', '19.b').
 
-    ``differs_kind`` and ``if_differs`` go together: a judgement of a difference names its
-    kind, and a kind comes with its evidence; a ValueError otherwise.
+    ``discrepancy`` and ``if_differs`` go together: a judgement of a difference names what the
+    seed text shows (a key of :data:`DISCREPANCIES`, which gives the kind), and comes with its
+    evidence; a ValueError otherwise.
     """
 
     equation: str
     printed: Any = None
     derived: Any = None
-    if_differs: str = ""  # judgement when the forms differ: what is right, and the evidence
-    differs_kind: str = ""  # paper_error | text_artefact | convention (pipeline.columns)
+    if_differs: str = (
+        ""  # judgement when the forms differ: the evidence for the kind, then what is right
+    )
+    discrepancy: str = ""  # a key of DISCREPANCIES; the kind follows from it (kind_of)
     if_match: str = ""  # optional remark when they agree
     not_checkable: str = ""  # reason, when there is nothing to compare
     sample: dict[sp.Symbol, tuple[float, float]] | None = None  # sampling ranges per symbol
 
     def __post_init__(self) -> None:
-        if self.differs_kind and self.differs_kind not in _kinds():
+        if self.discrepancy and self.discrepancy not in DISCREPANCIES:
             raise ValueError(
-                f"eq. {self.equation}: differs_kind {self.differs_kind!r} is not one of "
-                f"{_allowed_kinds()}"
+                f"eq. {self.equation}: discrepancy {self.discrepancy!r} is not one of {_allowed()}"
             )
-        if self.if_differs and not self.differs_kind:
+        if self.if_differs and not self.discrepancy:
             raise ValueError(
-                f"eq. {self.equation}: if_differs is given without differs_kind; give one of "
-                f"{_allowed_kinds()}"
+                f"eq. {self.equation}: if_differs is given without discrepancy; give one of "
+                f"{_allowed()}"
             )
-        if self.differs_kind and not self.if_differs:
+        if self.discrepancy and not self.if_differs:
             raise ValueError(
-                f"eq. {self.equation}: differs_kind {self.differs_kind!r} is given without "
+                f"eq. {self.equation}: discrepancy {self.discrepancy!r} is given without "
                 "if_differs, the judgement and its evidence"
             )
+
+    @property
+    def differs_kind(self) -> str:
+        """The kind of a difference (``pipeline.columns.DIFFERS_KINDS``), from the discrepancy."""
+        return kind_of(self.discrepancy) if self.discrepancy else ""
 
 
 @dataclass(frozen=True)
@@ -117,6 +140,7 @@ class AuditRow:
     residual: str
     note: str
     kind: str = ""  # one of pipeline.columns.DIFFERS_KINDS on a differs row, else blank
+    discrepancy: str = ""  # the key of DISCREPANCIES the kind follows from (differs rows)
     printed_expr: Any = field(default=None, compare=False, repr=False)
     derived_expr: Any = field(default=None, compare=False, repr=False)
     residual_expr: Any = field(default=None, compare=False, repr=False)
@@ -250,10 +274,10 @@ def run_check(check: Check) -> AuditRow:
     if all(r == 0 for r in simplified):
         return AuditRow(check.equation, "match", "0", check.if_match, **exprs)
     text = "; ".join(str(r) for r in simplified) if len(simplified) > 1 else str(simplified[0])
-    if not check.differs_kind:
+    if not check.discrepancy:
         raise ValueError(
             f"eq. {check.equation}: printed and derived forms differ (residual {_short(text)}) but the "
-            f"check records no differs_kind; give one of {_allowed_kinds()}, with the evidence "
+            f"check records no discrepancy; give one of {_allowed()}, with the evidence "
             "in if_differs"
         )
     residual = simplified[0] if len(simplified) == 1 else sp.Matrix(simplified)
@@ -263,6 +287,7 @@ def run_check(check: Check) -> AuditRow:
         text,
         check.if_differs,
         check.differs_kind,
+        check.discrepancy,
         residual_expr=residual,
         **exprs,
     )
@@ -309,6 +334,8 @@ def _srepr(obj: Any) -> str | None:
 def math_record(row: AuditRow) -> dict[str, Any]:
     """The printed, derived and residual forms of one audit row as MathML and SymPy srepr."""
     rec: dict[str, Any] = {"equation": row.equation, "status": row.status}
+    if row.status == "differs":
+        rec["kind"], rec["discrepancy"] = row.kind, row.discrepancy
     for key in ("printed", "derived", "residual"):
         obj = getattr(row, f"{key}_expr")
         rec[f"{key}_mathml"] = _mathml(obj)
@@ -337,17 +364,21 @@ def audit_frame(checks: Iterable[Check]):
 
 
 def audit_main(checks_fn, description: str, argv: list[str] | None = None) -> int:
-    """Command line of a paper's audit module: ``--out equation_audit.csv``."""
+    """Command line of a paper's audit module: ``--out equation_audit.csv`` and, optionally,
+    ``--math equation_math.json`` (the forms, and the kind and discrepancy of each difference)."""
     import argparse
     from pathlib import Path
 
-    from pipeline.atomic import write_csv
+    from pipeline.atomic import write_csv, write_json
     from pipeline.columns import AUDIT_COLUMNS
 
     parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--out", type=Path, required=True, help="equation_audit.csv to write")
+    parser.add_argument("--math", type=Path, help="equation_math.json to write (optional)")
     args = parser.parse_args(argv)
-    frame = audit_frame(checks_fn())
+    frame, records = audit_outputs(checks_fn())
     write_csv(args.out, frame, AUDIT_COLUMNS)
+    if args.math is not None:
+        write_json(args.math, records)
     print(f"equation audit: {len(frame)} rows, {frame['status'].value_counts().to_dict()}")
     return 0

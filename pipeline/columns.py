@@ -12,16 +12,23 @@ from __future__ import annotations
 # rows only and is blank on the others
 AUDIT_COLUMNS = ["equation", "status", "residual", "note", "kind"]
 AUDIT_STATUSES = ("match", "differs", "not_checkable")
-#: what a ``differs`` is, with the label a report shows for it:
-#: paper_error: the paper's printed formula is wrong (the seed text renders it coherently);
-#: text_artefact: the seed text garbled it (OCR, layout: a misread glyph, stacked lines, a
-#: displaced block), not the paper's mathematics;
+#: what a ``differs`` is, with the label a report shows for it. The kind follows from what the
+#: seed text shows (derivations.discrepancies.DISCREPANCIES, one rule for every paper):
+#: paper_error: the printed mathematics, legible and coherent in the seed text, is wrong and
+#: would give wrong numbers if used as printed (beyond one mark, or one mark that recurs or is
+#: carried into later equations);
+#: text_artefact: the seed text is visibly broken there (OCR, layout: stacked lines read as a
+#: fraction, a displaced line), and undoing the break gives the right equation;
 #: convention: an approximation or a convention the paper chose (small angles, a dropped term,
-#: a sign, frame or notation convention), used consistently.
+#: a sign, frame or notation convention), in which the printed form is right;
+#: unclear_from_text: one mark, once (a sign, exponent, transpose, subscript, one symbol read as
+#: another, a bar's extent), of the kind this OCR misreads: the text cannot tell a slip of the
+#: paper from one of the OCR. Only paper_error is shown as a failure.
 DIFFERS_KINDS = {
     "paper_error": "error of the paper",
     "text_artefact": "artefact of the text",
     "convention": "approximation or convention",
+    "unclear_from_text": "cannot tell from the text",
 }
 
 # results/<slug>/verdicts.csv

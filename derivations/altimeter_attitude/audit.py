@@ -7,9 +7,9 @@ expression derived in ``kinematics``, ``leveling``, ``complementary``, ``model``
 ``multiplicative_noise``, one module per section of the paper: ``audit_sensors`` (eqs.
 1-12), ``audit_complementary`` (13-23), ``audit_model`` (24-33) and ``audit_appendix``
 (Appendix A, 1a-13a). The status is computed by :func:`derivations.checks.run_check`;
-the judgement texts (``if_differs``) say what is correct and give the evidence for the
-kind of each difference (``differs_kind``: paper_error, text_artefact or convention,
-``pipeline.columns.DIFFERS_KINDS``). Both sides are put in the
+the judgement texts (``if_differs``) say what is correct and give, first, the evidence for the
+kind of each difference; the kind follows from the check's ``discrepancy`` by the one rule
+of :mod:`derivations.discrepancies` (``pipeline.columns.DIFFERS_KINDS``). Both sides are put in the
 same symbols first: where the paper writes a quantity as a symbol (omega_ie^b, gamma, C_3j,
 c_g, ...) the check substitutes the derived expression and says so in the note.
 

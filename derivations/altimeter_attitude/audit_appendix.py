@@ -95,13 +95,12 @@ def _appendix() -> list[Check]:
             "7a",
             printed=printed7,
             derived=(y - yhat) * (y - yhat).T,
-            differs_kind="paper_error",
-            if_differs="typo of the paper: the third term E[G(x) w (x - x_hat)^T], legible in "
-            "the seed text, lacks its F^T (it is the "
-            "transpose of the second term F E[(x - x_hat) w^T G^T(x)], i.e. E[G(x) w (x - "
-            "x_hat)^T] F^T). Compared before the expectation, with z = G(x) w and e = x - x_hat; "
-            "the term is zero in expectation anyway (w independent of x, zero mean), so eq. 8a "
-            "is unaffected",
+            discrepancy="wrong_term",
+            if_differs="error of the paper: a whole factor is missing, the F^T of the third term E[G(x) w (x - "
+            "x_hat)^T], legible in the seed text (it is the transpose of the second term F E[(x - "
+            "x_hat) w^T G^T(x)], i.e. E[G(x) w (x - x_hat)^T] F^T). Compared before the expectation, "
+            "with z = G(x) w and e = x - x_hat; the term is zero in expectation anyway (w "
+            "independent of x, zero mean), so eq. 8a is unaffected",
         )
     )
     ci = mn.covariance_identity(setting=st)
@@ -132,13 +131,12 @@ def _appendix() -> list[Check]:
             "10a",
             printed=printed10,
             derived=ci["E_GwwG"],
-            differs_kind="paper_error",
-            if_differs="typo of the paper: the expectation is missing on the first term (the seed "
-            "text renders the bracket coherently; 11a writes it with E(w w^T) inside); as "
-            "printed it is the "
-            "random G(x_hat) w w^T G^T(x_hat), whose expectation G(x_hat) Q G^T(x_hat) the "
-            "derivation has (residual G(x_hat)(w w^T - Q) G^T(x_hat)). The split by linearity of "
-            "G (G(x) = G(x_hat) + G(x - x_hat)) is right, and 11a uses the expectation",
+            discrepancy="wrong_term",
+            if_differs="error of the paper: an operator is missing, the expectation on the first term, in a "
+            "bracket the seed text renders coherently (11a writes it with E(w w^T) inside); as "
+            "printed it is the random G(x_hat) w w^T G^T(x_hat), whose expectation G(x_hat) Q "
+            "G^T(x_hat) the derivation has (residual G(x_hat)(w w^T - Q) G^T(x_hat)). The split by "
+            "linearity of G (G(x) = G(x_hat) + G(x - x_hat)) is right, and 11a uses the expectation",
         )
     )
     out.append(
@@ -158,9 +156,9 @@ def _appendix() -> list[Check]:
             derived=(ci["E_GewwGe"], ci["E_GewwGe"]),
             if_match="both closed forms of the second '(12-a)' line, sum_ij G_ci Q_ij P G_cj^T and "
             "Gamma (Q kron P) Gamma^T, equal E[G(x - x_hat) w w^T G^T(x - x_hat)] computed from "
-            "the moments (the first '(12-a)' line, expectations only, is the route). Not stored: "
-            "the garbled middle member sum_ij G_ci [Q kron P] G_cj^T (n x n times mn x mn, "
-            "dimensionally inconsistent); the first line prints x without subscript",
+            "the moments (the first '(12-a)' line, expectations only, is the route). Not compared: "
+            "the middle member sum_ij G_ci [Q kron P] G_cj^T is undefined (n x n times mn x mn), "
+            "so no status can be computed for it; the first line prints x without subscript",
         )
     )
     out.append(
@@ -168,11 +166,10 @@ def _appendix() -> list[Check]:
             "13a",
             printed=P.PRINTED["13a"],
             derived=ci["cov"],
-            differs_kind="paper_error",
-            if_differs="typo of the paper: the transpose on the second G(x_hat) is missing in a "
-            "coherent line of the seed text (eq. 31 has it, "
-            "G(x_hat) Q G^T(x_hat)); for the paper's 5x6 G the printed product G Q G is not even "
-            "defined. With the transpose the result matches the covariance computed by "
+            discrepancy="one_mark",
+            if_differs="cannot tell from the text: one transpose, once, missing on the second G(x_hat), where "
+            "eq. 31 prints G(x_hat) Q G^T(x_hat); for the paper's 5x6 G the printed product G Q G "
+            "is not even defined. With the transpose the result matches the covariance computed by "
             "expectation (multiplicative_noise.covariance_identity)",
         )
     )

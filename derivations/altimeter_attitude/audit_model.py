@@ -54,7 +54,7 @@ def _eqs_24_to_30() -> list[Check]:
         )
     )
     sign_note = (
-        "the printed C(x) is the negative of the derived one for noise added to the sensor "
+        "sign convention for w: the printed C(x) is the negative of the derived one for noise added to the sensor "
         "outputs (omega_tilde = omega + n_w, f_tilde = f + n_a, as the text says): omega = "
         "omega_tilde - n_w gives c_dot = ... + n_w x c = ... - [c x] n_w, and V_d_dot = ... - "
         "c^T n_a. With w defined as truth minus output it matches. The sign of w is immaterial: "
@@ -67,7 +67,7 @@ def _eqs_24_to_30() -> list[Check]:
             "26.C",
             printed=P.PRINTED["26.C"],
             derived=mm["C"],
-            differs_kind="convention",
+            discrepancy="notation",
             if_differs=sign_note + ". The '+' joining C(x) w to eq. 26 is lost in the OCR (read "
             "from eq. 28)",
         )
@@ -85,9 +85,10 @@ def _eqs_24_to_30() -> list[Check]:
             "28",
             printed=P.PRINTED["28"],
             derived=md.state_rhs(),
-            differs_kind="convention",
-            if_differs="differs only by the sign of the noise term, as eq. 26.C (same judgement): "
-            + sign_note
+            discrepancy="notation",
+            if_differs="sign convention for w, as eq. 26.C (same judgement): differs only by the "
+            "sign of the noise term; "
+            + sign_note[len("sign convention for w: ") :]
             + ". A x + B g match (u = g, from the text after eq. 29)",
         )
     )
@@ -192,17 +193,17 @@ def _eqs_31_to_33() -> list[Check]:
     )
     upd = mn.kalman_update(P.P_pred, P.H, P.R_k)
     typo = (
-        "typo of the paper: the innovation covariance uses the predicted covariance P_{k|k-1}, "
+        "error of the paper: one subscript, but in both the gain and the covariance update, "
+        "P_{k-1|k-1} where the innovation covariance uses the predicted P_{k|k-1}, "
         "H P_{k|k-1} H^T + R_k (derived as the minimum-variance gain, multiplicative_noise."
-        "kalman_update); the printed P_{k-1|k-1}, legible in both the gain and the covariance "
-        "update, would mix two time steps"
+        "kalman_update); as printed it would mix two time steps"
     )
     out.append(
         Check(
             "31.K",
             printed=P.PRINTED["31.K"],
             derived=upd["K"],
-            differs_kind="paper_error",
+            discrepancy="repeated_slip",
             if_differs=typo,
         )
     )
@@ -211,7 +212,7 @@ def _eqs_31_to_33() -> list[Check]:
             "31.P",
             printed=P.PRINTED["31.P"],
             derived=upd["P"],
-            differs_kind="paper_error",
+            discrepancy="repeated_slip",
             if_differs=typo + "; with P_{k|k-1} inside the inverse the printed form equals the "
             "derived (I - K H) P_{k|k-1}. The pipeline uses the derived update",
         )

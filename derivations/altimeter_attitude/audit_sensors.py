@@ -177,12 +177,12 @@ def _eqs_9_to_12() -> list[Check]:
             "11.phi",
             printed=roll,
             derived=s.phi,
-            differs_kind="paper_error",
-            if_differs="differs: with eq. 10's f_y = -g cos(theta) sin(phi), f_z = -g cos(theta) "
-            "cos(phi), atan2(f_y, f_z) = atan2(-sin(phi), -cos(phi)) = phi - pi (mod 2 pi) for "
-            f"cos(theta) > 0 (computed: the residual is {offsets} at the sampled phi, theta in "
-            "(0.15, 1.3)); the correct form is atan2(-f_y, -f_z) (leveling.leveling_angles). A "
-            "sign slip of the paper (not the OCR: both arguments are legible)",
+            discrepancy="repeated_slip",
+            if_differs="error of the paper: one sign, but missing from both arguments, "
+            "atan2(f_y, f_z) where eq. 10's f_y = -g cos(theta) sin(phi), f_z = -g cos(theta) "
+            "cos(phi) need atan2(-f_y, -f_z) (leveling.leveling_angles); as printed it gives "
+            "atan2(-sin(phi), -cos(phi)) = phi - pi (mod 2 pi) for cos(theta) > 0 (computed: the "
+            f"residual is {offsets} at the sampled phi, theta in (0.15, 1.3))",
         )
     )
     out.append(

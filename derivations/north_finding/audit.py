@@ -7,8 +7,9 @@ with the expression derived in ``sensors``, ``leveling`` and ``azimuth``, one mo
 per section of the paper: ``audit_sensors`` (eqs. 1-18), ``audit_leveling`` (19-34),
 ``audit_azimuth`` (35-52) and ``audit_gyro_calibration`` (53-71). The status is computed
 by :func:`derivations.checks.run_check`; the judgement texts (``if_differs``) say what is
-correct and give the evidence for the kind of each difference (``differs_kind``:
-paper_error, text_artefact or convention, ``pipeline.columns.DIFFERS_KINDS``). The pipeline always uses the derived form.
+correct and give, first, the evidence for the
+kind of each difference; the kind follows from the check's ``discrepancy`` by the one rule
+of :mod:`derivations.discrepancies` (``pipeline.columns.DIFFERS_KINDS``). The pipeline always uses the derived form.
 """
 
 from __future__ import annotations

@@ -25,9 +25,10 @@ def checks() -> list[Check]:
             "37",
             printed=P.PRINTED["37"],
             derived=sensors.angular_rate_b(),
-            differs_kind="paper_error",
-            if_differs="dimension slip of the paper: with [w~] = w^EI [c_x, c_y, c_z], c_z must add "
-            "omega / w^EI, not omega (the same slip recurs in eqs. 68-69); at rest (omega = 0) both agree",
+            discrepancy="wrong_term",
+            if_differs="error of the paper: a divisor is missing, and the same slip recurs in eqs. 68-69: with "
+            "[w~] = w^EI [c_x, c_y, c_z], c_z must add omega / w^EI, not omega; at rest (omega = 0) "
+            "both agree",
         )
     )
     out.append(Check("38", printed=P.PRINTED["38"], derived=azimuth.ideal_gyro("x")))
@@ -68,10 +69,10 @@ def checks() -> list[Check]:
             "40.d",
             printed=P.PRINTED["40.d"],
             derived=a12["c"],
-            differs_kind="paper_error",
-            if_differs="typo of the paper: the numerator must end in + 2 w^EI cos(th) sin(ph) "
-            "sin(l), not + 2 w^EI; the seed text renders the fraction coherently with the factor "
-            "absent (case 1, eq. 40.b, prints its term in full); the derivation gives "
+            discrepancy="wrong_term",
+            if_differs="error of the paper: three factors are missing, the numerator ends in + 2 w^EI where it "
+            "must end in + 2 w^EI cos(th) sin(ph) sin(l), in a fraction the seed text renders "
+            "coherently (case 1, eq. 40.b, prints its term in full); the derivation gives "
             "(w90 - w270 + 2 Omega cos th sin ph sin l) / (2 Omega cos l)",
         )
     )
@@ -81,9 +82,10 @@ def checks() -> list[Check]:
             "41",
             printed=P.PRINTED["41"],
             derived=sp.Matrix(half),
-            differs_kind="text_artefact",
-            if_differs="OCR artefact: the factor 2 of the half-angle formula is read as 'tau' "
-            "(psi = 2 atan(...), as eq. 43 prints it)",
+            discrepancy="one_mark",
+            if_differs="cannot tell from the text: one symbol, once, the factor 2 of the half-angle formula "
+            "printed as tau, where eq. 43 prints psi = 2 atan(...), and this OCR reads single symbols "
+            "as others ('a' for alpha in platform_drift eq. 34); as printed psi would scale with tau",
         )
     )
     a2 = azimuth.method2()
@@ -109,9 +111,9 @@ def checks() -> list[Check]:
             "46",
             printed=P.PRINTED["46"],
             derived=sp.expand(eq46),
-            differs_kind="paper_error",
-            if_differs="error of the paper: the seed text renders the expansion coherently term by "
-            "term, but its B term has sin(psi) where B cos(psi) has sin(l) cos(psi), its C term "
+            discrepancy="wrong_term",
+            if_differs="error of the paper: three terms are wrong in an expansion the seed text renders coherently "
+            "term by term: its B term has sin(psi) where B cos(psi) has sin(l) cos(psi), its C term "
             "lacks the sin(psi) of C cos(psi) sin(psi), and its constant has + cos^2 ph cos^2 th "
             "where the derivation has - cos^2 ph cos^2 th; the derivation gives (A^2 + B^2)/Omega^2 "
             "with A, B of eq. 44, whose coefficients are eq. 47's A-D (which match) and the "
@@ -125,11 +127,11 @@ def checks() -> list[Check]:
             "47.E",
             printed=P.PRINTED["47.E"],
             derived=a3["E47"],
-            differs_kind="paper_error",
-            if_differs="error of the paper (not explained by OCR): the constant must be "
-            "cos^2 l cos^2 ph + sin^2 l (1 - cos^2 th cos^2 ph) - (w_max / w^EI)^2; the printed "
-            "constant differs and the ratio lacks its square. With the printed E the quartic does "
-            "not return the true azimuth even for ideal sensors "
+            discrepancy="wrong_term",
+            if_differs="error of the paper: the constant and the power of the ratio are both wrong, more than one "
+            "mark: the constant must be cos^2 l cos^2 ph + sin^2 l (1 - cos^2 th cos^2 ph) - "
+            "(w_max / w^EI)^2, and the printed ratio lacks its square. With the printed E the quartic "
+            "does not return the true azimuth even for ideal sensors "
             "(tests/north_finding/test_audit_north_finding.py); the pipeline uses the derived E",
         )
     )
@@ -172,10 +174,11 @@ def checks() -> list[Check]:
             "52",
             printed=P.PRINTED["52"],
             derived=a3["amp_A"] / a3["amp_B"],
-            differs_kind="text_artefact",
-            if_differs="OCR artefact: the two-line numerator A = cos ps sin th sin ph cos l - sin ps "
-            "cos ph cos l - cos th sin ph sin l is split into a fraction; the intended form is "
-            "tan(tau*) = A/B with A, B of eq. 44 (eq. 51). The pipeline uses tau* = atan2(A, B)",
+            discrepancy="visible_garble",
+            if_differs="artefact of the text: stacked lines read as a fraction, the two-line numerator A = cos ps "
+            "sin th sin ph cos l - sin ps cos ph cos l - cos th sin ph sin l split into a fraction; "
+            "the intended form is tan(tau*) = A/B with A, B of eq. 44 (eq. 51). The pipeline uses "
+            "tau* = atan2(A, B)",
         )
     )
     return out

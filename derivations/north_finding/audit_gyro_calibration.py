@@ -47,10 +47,10 @@ def checks() -> list[Check]:
             "57",
             printed=P.PRINTED["57"],
             derived=om_model[0] / om_model[1],
-            differs_kind="text_artefact",
-            if_differs="OCR artefact: the ratio (cos ps cos th cos l + sin th sin l) / ((cos ps sin th "
-            "sin ph - sin ps cos ph) cos l - cos th sin ph sin l) has two-line numerator and denominator, "
-            "read as a sum of two fractions",
+            discrepancy="visible_garble",
+            if_differs="artefact of the text: stacked lines read as a sum, the ratio (cos ps cos th cos l + sin "
+            "th sin l) / ((cos ps sin th sin ph - sin ps cos ph) cos l - cos th sin ph sin l), whose "
+            "numerator and denominator take two lines each, read as a sum of two fractions",
         )
     )
     out.append(
@@ -58,11 +58,11 @@ def checks() -> list[Check]:
             "58",
             printed=P.PRINTED["58"],
             derived=sp.Matrix([a4["A"], a4["B"], a4["C"]]),
-            differs_kind="text_artefact",
-            if_differs="OCR artefact: B is wrong as printed, B = (omega_1/omega_2) sin th sin ph - cos "
-            "th (cos th is not divided by omega_2); A and C match. The OCR garbles this block (the "
-            "'2' under each fraction is the subscript of omega_2), and the extent of B's fraction "
-            "bar is lost with it",
+            discrepancy="one_mark",
+            if_differs="cannot tell from the text: one mark, the extent of B's fraction bar, in a block whose "
+            "fractions the OCR visibly garbles (the '2' under each is the subscript of omega_2); B "
+            "must be (omega_1/omega_2) sin th sin ph - cos th, cos th not divided by omega_2, where "
+            "the seed text puts it under the bar; A and C match",
         )
     )
     out.append(
@@ -70,9 +70,10 @@ def checks() -> list[Check]:
             "59",
             printed=P.PRINTED["59"],
             derived=sp.Matrix(half),
-            differs_kind="paper_error",
-            if_differs="typo of the paper: C^2 belongs under the root, sqrt(A^2 + B^2 - C^2), as in "
-            "eqs. 41 and 43; the seed text renders the root coherently, ending before '- C'",
+            discrepancy="one_mark",
+            if_differs="cannot tell from the text: one mark, once, the extent of the root, which ends before "
+            "'- C' where eqs. 41 and 43 put C^2 under it, sqrt(A^2 + B^2 - C^2), and this OCR "
+            "misplaces bars (eqs. 52, 57, 58)",
         )
     )
     om1_model = om_model[0]
@@ -127,9 +128,11 @@ def checks() -> list[Check]:
             "64.A",
             printed=P.PRINTED["64.A"],
             derived=a5["A"],
-            differs_kind="paper_error",
-            if_differs="typo of the paper: the last term must be -2 cos th tan ph tan^2 l sin th tan "
-            "th tan ph (printed tan th tan th, a coherent line of the seed text)"
+            discrepancy="one_mark",
+            if_differs="cannot tell from the text: one symbol, once, the last factor of the last "
+            "term printed tan th where the derivation has tan ph, in a block whose C lines the OCR "
+            "visibly splits into spurious fractions; the last term must be -2 cos th tan ph "
+            "tan^2 l sin th tan th tan ph"
             + (
                 "; with that reading the printed A equals the derived one"
                 if fixed_ok
@@ -157,10 +160,10 @@ def checks() -> list[Check]:
             printed=P.PRINTED["65.b"],
             derived=roots,
             sample=pos,
-            differs_kind="paper_error",
-            if_differs="typo of the paper: under the root 4AB cos^2 l, not 4AB cos l (the seed text "
-            "renders the root coherently, with C^2 cos^2 l before it); the simplified form that "
-            "follows (65.c) is right",
+            discrepancy="one_mark",
+            if_differs="cannot tell from the text: one exponent, once, 4AB cos l under the root where the "
+            "derivation has 4AB cos^2 l (the C^2 cos^2 l before it has its square); the simplified "
+            "form that follows (65.c) is right",
         )
     )
     out.append(Check("65.c", printed=P.PRINTED["65.c"], derived=roots, sample=pos))
@@ -170,10 +173,11 @@ def checks() -> list[Check]:
             "67",
             printed=P.PRINTED["67"],
             derived=a5["cos_psi_sol"],
-            differs_kind="paper_error",
-            if_differs="typo of the paper (fraction-bar extent): cos psi = omega_1 / (S cos th cos l) "
-            "- tan th tan l (eqs. 61-62), the subtraction is outside the fraction, where the seed "
-            "text renders it coherently inside; arccos also leaves the sign of psi to the compass",
+            discrepancy="one_mark",
+            if_differs="cannot tell from the text: one mark, once, the extent of the fraction bar, cos psi = "
+            "omega_1 / (S cos th cos l) - tan th tan l (eqs. 61-62) with the subtraction outside the "
+            "fraction, where the seed text puts it inside; arccos also leaves the sign of psi to the "
+            "compass",
         )
     )
     a6 = azimuth.method6()
@@ -182,9 +186,10 @@ def checks() -> list[Check]:
             "68",
             printed=P.PRINTED["68"],
             derived=a6["model_z"],
-            differs_kind="paper_error",
-            if_differs="dimension slip of the paper (as eq. 37): the table rate omega is multiplied by w^EI; the "
-            "gyro reads S (w^EI [...] + omega) + b. The paper then sets omega = 0, where both agree",
+            discrepancy="wrong_term",
+            if_differs="error of the paper: a divisor is missing, the slip of eq. 37 again: the table rate omega "
+            "is multiplied by w^EI; the gyro reads S (w^EI [...] + omega) + b. The paper then sets "
+            "omega = 0, where both agree",
         )
     )
     out.append(
@@ -192,8 +197,9 @@ def checks() -> list[Check]:
             "69",
             printed=P.PRINTED["69"],
             derived=sp.expand((a6["model_z"] - s.b) / s.Omega),
-            differs_kind="paper_error",
-            if_differs="same slip of the paper as eq. 68: omega_3 = S ([...] + omega / w^EI); equal at omega = 0",
+            discrepancy="wrong_term",
+            if_differs="error of the paper: a divisor is missing, the slip of eqs. 37 and 68 again: omega_3 = "
+            "S ([...] + omega / w^EI); equal at omega = 0",
         )
     )
     out.append(Check("70", printed=P.PRINTED["70"], derived=a6["scale"]))

@@ -44,10 +44,11 @@ def checks() -> list[Check]:
             "21",
             printed=P.PRINTED["21"],
             derived=s.g * sp.Matrix([[m2["h_sin_theta"], m2["h_cth_sphi"]]]).subs(s.tau, P.tau_i),
-            differs_kind="paper_error",
-            if_differs="typo of the paper: with Y = a_x (as printed) the rows of H must carry g, as "
-            "in eq. 20 (the readings are not in units of g: eqs. 20 and 25-26 keep g explicit); "
-            "the pipeline uses H = [cos t, -sin t] with Y = a_x / g",
+            discrepancy="wrong_term",
+            if_differs="error of the paper: a whole factor is missing, g in the rows of H, in a coherent line of "
+            "the seed text; with Y = a_x (as printed) the rows of H must carry g, as in eq. 20 (the "
+            "readings are not in units of g: eqs. 20 and 25-26 keep g explicit); the pipeline uses "
+            "H = [cos t, -sin t] with Y = a_x / g",
         )
     )
     out.append(
@@ -55,11 +56,11 @@ def checks() -> list[Check]:
             "22",
             printed=P.PRINTED["22"],
             derived=sensors.coriolis_b(),
-            differs_kind="paper_error",
-            if_differs="typo of the paper: p_x and p_z lack the lever arm l (dimensionally they must "
-            "carry l: 2 Omega x v_T with |v_T| = l omega); the seed text renders both lines "
-            "coherently without l, and the block beside eq. 24 prints 2 w^EI l w; the derivation "
-            "(transport theorem) gives 2 Omega l omega [-a_z, 0, a_x]",
+            discrepancy="wrong_term",
+            if_differs="error of the paper: a whole factor is missing, the lever arm l in both p_x and p_z, which "
+            "the seed text renders coherently (dimensionally they must carry l: 2 Omega x v_T with "
+            "|v_T| = l omega); the block beside eq. 24 prints 2 w^EI l w; the derivation (transport "
+            "theorem) gives 2 Omega l omega [-a_z, 0, a_x]",
         )
     )
     out.append(
@@ -67,9 +68,10 @@ def checks() -> list[Check]:
             "23",
             printed=P.PRINTED["23"],
             derived=leveling.ideal_accel("x", still=False),
-            differs_kind="text_artefact",
-            if_differs="the displayed eq. 23 omits the Coriolis line p_x of eq. 22; the block printed "
-            "beside eq. 24 has it (23.x), so this is an artefact of the two-column text",
+            discrepancy="visible_garble",
+            if_differs="artefact of the text: a line is displaced to another block, the Coriolis line p_x of eq. "
+            "22, which the displayed eq. 23 omits and the block printed beside eq. 24 has (23.x, which "
+            "matches); the two-column layout split the equation",
         )
     )
     out.append(

@@ -90,11 +90,11 @@ def checks() -> list[Check]:
             "16.b",
             printed=P.PRINTED["16.b"],
             derived=ideal_f,
-            differs_kind="paper_error",
-            if_differs="typo of the paper: the expanded first two rows drop sin(phi) "
-            "(-cos t sin th + sin t cos th sin ph; sin t sin th + cos t cos th sin ph), which the "
-            "seed text renders coherently in both rows; the product form (16.a) and eq. 17 are "
-            "right",
+            discrepancy="wrong_term",
+            if_differs="error of the paper: a whole factor is missing, sin(phi) at the end of the first two rows "
+            "of the expansion, which the seed text renders coherently in both rows; they must read "
+            "-cos t sin th + sin t cos th sin ph and sin t sin th + cos t cos th sin ph; the product "
+            "form (16.a) and eq. 17 are right",
         )
     )
     out.append(Check("17", printed=P.PRINTED["17"], derived=leveling.ideal_accel("x")))

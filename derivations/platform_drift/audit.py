@@ -7,9 +7,9 @@ expression derived in ``kinematics``, ``algorithm``, ``specific_force``, ``align
 ``drift`` and ``schuler``, one module per section of the paper: ``audit_navigation``
 (eqs. 1-19), ``audit_alignment`` (20-27), ``audit_drift`` (28-36) and ``audit_table2``
 (Table 2). The status is computed by :func:`derivations.checks.run_check`;
-the judgement texts (``if_differs``) say what is correct and give the evidence for the
-kind of each difference (``differs_kind``: paper_error, text_artefact or convention,
-``pipeline.columns.DIFFERS_KINDS``). Where the paper linearises
+the judgement texts (``if_differs``) say what is correct and give, first, the evidence for the
+kind of each difference; the kind follows from the check's ``discrepancy`` by the one rule
+of :mod:`derivations.discrepancies` (``pipeline.columns.DIFFERS_KINDS``). Where the paper linearises
 ("=~"), the derivation is truncated at the same order (:func:`approx.taylor`) and the note
 says in which small quantities. The pipeline always uses the derived form.
 """

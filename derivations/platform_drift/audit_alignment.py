@@ -23,11 +23,11 @@ def _eqs_20_to_27() -> list[Check]:
             "20",
             printed=P.PRINTED["20"],
             derived=sp.Matrix([ex["phi_y"], ex["phi_x"]]),
-            differs_kind="paper_error",
-            if_differs="typo of the paper: sin(psi_0-) and cos(psi_0-) are swapped in both rows, "
-            "which the seed text renders coherently; eq. 18 with "
-            "f = b_a gives phi_y0- = (R omega_e^2 sin cos cos(psi) - b_a1)/(g_i - R omega_e^2 "
-            "cos^2) and phi_x0- = (R omega_e^2 sin cos sin(psi) + b_a2)/(...), as eq. 21 has it",
+            discrepancy="repeated_slip",
+            if_differs="error of the paper: sin(psi_0-) and cos(psi_0-) are swapped in both rows, which the seed "
+            "text renders coherently; eq. 18 with f = b_a gives phi_y0- = (R omega_e^2 sin cos "
+            "cos(psi) - b_a1)/(g_i - R omega_e^2 cos^2) and phi_x0- = (R omega_e^2 sin cos sin(psi) "
+            "+ b_a2)/(...), as eq. 21 has it",
         )
     )
     defs = P.PRINTED["21.defs"]
@@ -83,13 +83,14 @@ def _eqs_20_to_27() -> list[Check]:
             "24",
             printed=P.PRINTED["24"],
             derived=al.r_0m(),
-            differs_kind="paper_error",
-            if_differs="error of the paper: r(0-) = omega_e sin(phi_i) - d_r with d_r of eq. 23 "
-            "(which contains -alpha omega_e cos(phi_i)) is omega_e sin(phi_i) + alpha omega_e "
-            "cos(phi_i) + omega_e cos(phi_i)(sin psi theta_F2 - cos psi theta_F1): the printed "
-            "result drops alpha omega_e cos(phi_i) (the plumb-aligned platform sees omega_e "
-            "sin(phi_i + alpha)). The term is first order, like the theta_F terms kept; it enters "
-            "eq. 31 only at second order (alpha^2), so eqs. 31-36 for an ideal IMU are unaffected",
+            discrepancy="wrong_term",
+            if_differs="error of the paper: a whole term is dropped, alpha omega_e cos(phi_i), and eq. 31 "
+            "carries the loss: r(0-) = omega_e sin(phi_i) - d_r with d_r of eq. 23 (which contains "
+            "-alpha omega_e cos(phi_i)) is omega_e sin(phi_i) + alpha omega_e cos(phi_i) + omega_e "
+            "cos(phi_i)(sin psi theta_F2 - cos psi theta_F1) (the plumb-aligned platform sees "
+            "omega_e sin(phi_i + alpha)). The term is first order, like the theta_F terms kept; it "
+            "enters eq. 31 only at second order (alpha^2), so eqs. 31-36 for an ideal IMU are "
+            "unaffected",
         )
     )
     out.append(

@@ -38,13 +38,13 @@ def _eq_28() -> list[Check]:
             "28",
             printed=printed,
             derived=sp.Matrix([ex["phi_x_ddot"], ex["phi_y_ddot"]]),
-            differs_kind="convention",
-            if_differs="approximation of the paper: differentiating eq. 15 with the commands of "
-            "eq. 26 gives the gyroscopic terms p^2 phi_x + p q phi_y (row 1) and q^2 phi_y + p q "
-            "phi_x (row 2); k_sh = g/R - phi_dot^2 - (lambda_dot + omega_e)^2 cos^2 = g/R - (p^2 "
-            "+ q^2) lumps them as (p^2 + q^2) phi, which differs by (q phi_x - p phi_y)(q, -p). "
-            "Relative size (p^2 + q^2)/(g/R): 0.3 % at rest, ~2 % at 1100 m/s. The b_g3, k_g, "
-            "b_a and drift-rate terms match; eqs. 29-36 use the paper's constant-k_sh model",
+            discrepancy="approximation",
+            if_differs="approximation of the paper: k_sh = g/R - (p^2 + q^2) lumps the gyroscopic terms as "
+            "(p^2 + q^2) phi, the constant-k_sh model that eqs. 29-36 use throughout; differentiating "
+            "eq. 15 with the commands of eq. 26 gives p^2 phi_x + p q phi_y (row 1) and q^2 phi_y + "
+            "p q phi_x (row 2), which differ from the lumped form by (q phi_x - p phi_y)(q, -p). "
+            "Relative size (p^2 + q^2)/(g/R): 0.3 % at rest, ~2 % at 1100 m/s. The b_g3, k_g, b_a "
+            "and drift-rate terms match",
         ),
         Check(
             "28.k",
@@ -103,12 +103,12 @@ def _eqs_29_to_32() -> list[Check]:
             "31.x",
             printed=P.PRINTED["31.x"],
             derived=full["phi_x_dot"],
-            differs_kind="paper_error",
-            if_differs="two slips of the paper: (i) typo (-omega_e cos cos psi_0) theta_F2^2 must be theta_F1^2 "
-            "(from r(0-) theta_F1 in (b_g3 - r(0-))(alpha cos psi_0 - theta_F1)); (ii) the "
-            "second-order terms -alpha^2 omega_e cos cos psi_0 + alpha omega_e cos theta_F1 are "
-            "missing because eq. 24 dropped alpha omega_e cos(phi_i). The first-order and "
-            "ideal-IMU parts (31.x.ideal) match",
+            discrepancy="wrong_term",
+            if_differs="error of the paper: whole second-order terms are missing, -alpha^2 omega_e cos cos psi_0 "
+            "+ alpha omega_e cos theta_F1, lost with eq. 24's alpha omega_e cos(phi_i); besides, one "
+            "subscript (which alone the OCR could have misread): (-omega_e cos cos psi_0) theta_F2^2 "
+            "must be theta_F1^2 (from r(0-) theta_F1 in (b_g3 - r(0-))(alpha cos psi_0 - "
+            "theta_F1)). The first-order and ideal-IMU parts (31.x.ideal) match",
         )
     )
     out.append(
@@ -136,11 +136,12 @@ def _eqs_29_to_32() -> list[Check]:
             "31.y",
             printed=P.PRINTED["31.y"],
             derived=full["phi_y_dot"],
-            differs_kind="paper_error",
-            if_differs="sign error of the paper: eq. 27 gives phi_y_dot(0+) = (r(0-) - b_g3) "
-            "phi_x0 + b_g2, so the b_g3 terms are -(alpha sin psi_0) b_g3 - b_g3 theta_F2, printed "
-            "with '+'; plus the second-order alpha^2 omega_e cos sin psi_0 + alpha omega_e cos "
-            "theta_F2 lost with eq. 24. The ideal-IMU, b_g3 = 0 reduction (31.y.ideal) matches",
+            discrepancy="wrong_term",
+            if_differs="error of the paper: whole second-order terms are missing, alpha^2 omega_e cos sin psi_0 "
+            "+ alpha omega_e cos theta_F2, lost with eq. 24, and the b_g3 terms carry the sign slip "
+            "that recurs in eq. 34: eq. 27 gives phi_y_dot(0+) = (r(0-) - b_g3) phi_x0 + b_g2, so "
+            "they are -(alpha sin psi_0) b_g3 - b_g3 theta_F2, printed with '+'. The ideal-IMU, "
+            "b_g3 = 0 reduction (31.y.ideal) matches",
         )
     )
     out.append(
@@ -220,11 +221,11 @@ def _eqs_33_to_36() -> list[Check]:
             "34",
             printed=P.PRINTED["34"],
             derived=sp.Matrix([ic34[k] for k in ("phi_x", "phi_x_dot", "phi_y", "phi_y_dot")]),
-            differs_kind="paper_error",
-            if_differs="sign error of the paper (as in eq. 31): from eq. 27, phi_y_dot(0+) = alpha omega_e "
-            "sin(phi_i) sin psi_0 - alpha sin psi_0 b_g3 (printed + alpha sin psi_0 b_g3); the "
-            "other three rows match ('a' of the OCR read alpha). Propagates into eq. 36's "
-            "int q_merror",
+            discrepancy="repeated_slip",
+            if_differs="error of the paper: one sign, the slip of eq. 31 again, carried into eq. 36: from eq. 27, "
+            "phi_y_dot(0+) = alpha omega_e sin(phi_i) sin psi_0 - alpha sin psi_0 b_g3 (printed + "
+            "alpha sin psi_0 b_g3); the other three rows match ('a' of the OCR read alpha). "
+            "Propagates into eq. 36's int q_merror",
         )
     )
     out.append(
@@ -284,10 +285,10 @@ def _eqs_33_to_36() -> list[Check]:
             printed=P.PRINTED["36.q"].xreplace(sub36),
             derived=c3["int_q"],
             sample=SEPARATED,
-            differs_kind="paper_error",
-            if_differs="the first term inherits the paper's sign error of eq. 34: derived -(alpha sin psi_0 "
-            "b_g3 / sqrt(k_sh)) sin(sqrt(k_sh) t); the forced and homogeneous A-terms with a', b' "
-            "match. The generated error_ch3 uses the derived form",
+            discrepancy="repeated_slip",
+            if_differs="error of the paper: one sign, carried on from eqs. 31 and 34 into the first term: derived "
+            "-(alpha sin psi_0 b_g3 / sqrt(k_sh)) sin(sqrt(k_sh) t); the forced and homogeneous "
+            "A-terms with a', b' match. The generated error_ch3 uses the derived form",
         )
     )
     out.append(

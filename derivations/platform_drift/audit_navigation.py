@@ -139,14 +139,14 @@ def _eqs_12_to_19() -> list[Check]:
             "16",
             printed=P.PRINTED["16"],
             derived=rhs16,
-            differs_kind="paper_error",
-            if_differs="the second component of -^{m_i} omega_ie must be +omega_e sin(psi) "
-            "cos(phi_i) (C3(psi)^T [omega_e cos, 0, omega_e sin] = [omega_e cos cos psi, "
-            "-omega_e cos sin psi, omega_e sin]); printed C psi, a typo of the paper: the seed text "
-            "renders the vector coherently, and eq. 19's phi_y_dot has the right + omega_e "
-            "cos(phi_i) sin(psi). With the derived vector the equation gives (lambda_dot + omega_e) "
-            "cos(phi_i) = cos psi p_m - sin psi q_m, phi_i_dot = sin psi p_m + cos psi q_m, "
-            "psi_dot = r_m - (lambda_dot + omega_e) sin(phi_i) (generated position_rates)",
+            discrepancy="one_mark",
+            if_differs="cannot tell from the text: one symbol, once, C psi where S psi belongs in the second "
+            "component of -^{m_i} omega_ie, and eq. 19's phi_y_dot has the right + omega_e "
+            "cos(phi_i) sin(psi); the component must be +omega_e sin(psi) cos(phi_i) (C3(psi)^T "
+            "[omega_e cos, 0, omega_e sin] = [omega_e cos cos psi, -omega_e cos sin psi, omega_e "
+            "sin]). With the derived vector the equation gives (lambda_dot + omega_e) cos(phi_i) = "
+            "cos psi p_m - sin psi q_m, phi_i_dot = sin psi p_m + cos psi q_m, psi_dot = r_m - "
+            "(lambda_dot + omega_e) sin(phi_i) (generated position_rates)",
         )
     )
     f17 = sf.specific_force_s()
@@ -155,11 +155,12 @@ def _eqs_12_to_19() -> list[Check]:
             "17",
             printed=P.PRINTED["17"],
             derived=sp.Matrix([f17[0], f17[1]]),
-            differs_kind="paper_error",
-            if_differs="typo of the paper: the Coriolis term is 2 R sin(phi_i) (lambda_dot + "
-            "omega_e) phi_i_dot, not (lambda_dot + omega_e)^2 (dimensionally the square is "
-            "wrong, and the seed text prints it in both f1 and f2); the rest matches the specific force of a vehicle on the sphere, first order "
-            "in the tilts (reading the unmatched '(' as (R phi_ddot + R(...)^2 sin cos) cos psi)",
+            discrepancy="repeated_slip",
+            if_differs="error of the paper: one exponent, but in both f1 and f2, the Coriolis term printed "
+            "2 R sin(phi_i) (lambda_dot + omega_e)^2 phi_i_dot where it is 2 R sin(phi_i) "
+            "(lambda_dot + omega_e) phi_i_dot (dimensionally the square is wrong); the rest matches "
+            "the specific force of a vehicle on the sphere, first order in the tilts (reading the "
+            "unmatched '(' as (R phi_ddot + R(...)^2 sin cos) cos psi)",
         )
     )
     f18 = sf.specific_force_stationary()

@@ -33,13 +33,13 @@ def _table2() -> list[Check]:
             "T2.5",
             printed=P.PRINTED["T2.5"].xreplace({s.eps_z_p: s.eps_z}),
             derived=sp.Matrix(t2["T2.5"]),
-            differs_kind="convention",
-            if_differs="a notation of the cited source: with eps'_z read as the row's azimuth drift "
-            "eps_z, the printed Dx, Dy are twice the derived (eps_z v_y / 2)[t^2 - 2(1 - cos w_0 "
-            "t)/w_0^2]: phi_z = eps_z t gives delta_x'' + w_0^2 delta_x = w_0^2 v_y eps_z t^2 / 2. "
-            "They agree for eps'_z = eps_z / 2; the row is headed eps_z and the paper never "
-            "defines the prime (Pitman's notation), so the printed form is not shown wrong. The "
-            "generated table2_azimuth_drift takes eps_z and uses the derived form",
+            discrepancy="notation",
+            if_differs="notation of the cited source: the printed Dx, Dy equal the derived ones for eps'_z = "
+            "eps_z / 2, a prime the paper never defines (Pitman's notation), so the printed form is "
+            "not shown wrong; with eps'_z read as the row's azimuth drift eps_z (the row is headed "
+            "eps_z) they are twice the derived (eps_z v_y / 2)[t^2 - 2(1 - cos w_0 t)/w_0^2]: phi_z "
+            "= eps_z t gives delta_x'' + w_0^2 delta_x = w_0^2 v_y eps_z t^2 / 2. The generated "
+            "table2_azimuth_drift takes eps_z and uses the derived form",
         )
     )
     out.append(

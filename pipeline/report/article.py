@@ -11,7 +11,13 @@ from pipeline.report.causes import plural
 from pipeline.report.model import Block, Bullets, Paragraph, Section, Table
 from pipeline.report.paper_parts import PaperParts
 from pipeline.report.paper_section import MAIN_TITLES, discussion_section
-from pipeline.report.vocabulary import CAUSE_SHORT_WORDS, CAUSE_WORDS, DIFFERS_WORDS, MARK_WORDS
+from pipeline.report.vocabulary import (
+    CAUSE_SHORT_WORDS,
+    CAUSE_WORDS,
+    DIFFERS_WORDS,
+    MARK_WORDS,
+    NEUTRAL_DIFFERS,
+)
 
 __all__ = ["abstract", "discussion", "introduction", "references"]
 
@@ -83,8 +89,10 @@ def introduction(papers: Sequence[PaperParts], appendix_names: Sequence[str]) ->
             "or printed as 'about', with its stated tolerance) or statistical (where the published "
             "value falls in our Monte Carlo distribution); a claim is a sentence of the paper "
             "judged by a named test. A printed equation that differs is an "
-            + ", an ".join(DIFFERS_WORDS.values())
-            + "; only an error of the paper is shown in red. A failing verdict names its root "
+            + ", an ".join(w for k, w in DIFFERS_WORDS.items() if k not in NEUTRAL_DIFFERS)
+            + ", or, where the seed text cannot tell a slip of the OCR from one of the paper, "
+            + " or ".join(f"'{DIFFERS_WORDS[k]}'" for k in sorted(NEUTRAL_DIFFERS))
+            + " (grey); only an error of the paper is shown in red. A failing verdict names its root "
             "cause where one is identified, by a short title; its kind is one of: "
             + "; ".join(
                 w if CAUSE_SHORT_WORDS.get(k, w) == w else f"{CAUSE_SHORT_WORDS[k]}, that is {w}"

@@ -144,6 +144,14 @@ def differs_counts(rows: Sequence[EquationRow]) -> dict[str, int]:
     return {k: n for k, n in out.items() if n or k}
 
 
+def _statement(r: EquationRow) -> str:
+    """The short statement of a differing row, without the words of its kind where the note
+    opens with them (they stand in the parentheses before it)."""
+    opener = f"{differs_word(r.kind)}: "
+    note = r.note[len(opener) :] if r.kind and r.note.startswith(opener) else r.note
+    return short_statement(note)
+
+
 def _differs_text(counts: Mapping[str, int]) -> str:
     parts = [f"{n} {differs_word(k)}" for k, n in counts.items() if n]
     return f" ({', '.join(parts)})" if parts else ""
@@ -170,10 +178,7 @@ def equation_section(
     if differs:
         blocks.append(
             Bullets(
-                [
-                    f"Eq. {r.equation} ({differs_word(r.kind)}): {short_statement(r.note)}"
-                    for r in differs
-                ]
+                [f"Eq. {r.equation} ({differs_word(r.kind)}): {_statement(r)}" for r in differs]
             )
         )
     return Section(f"{slug}-equations", "Equation audit", blocks)

@@ -67,6 +67,8 @@ span.v-not_checkable { color: #555; font-weight: bold; }
 span.v-missing, span.t-partial, span.v-differs { color: #8a5a00; font-weight: bold; }
 tr.v-differs.t-bad td { background: #fbe3e1; }
 span.v-differs.t-bad { color: #a3261a; }
+tr.v-differs.t-neutral td { background: #f1f1f1; }
+span.v-differs.t-neutral { color: #555; }
 ul.marks { list-style: none; padding-left: 0.2em; }
 ul.marks li { margin: 0.35em 0; }
 span.mark { display: inline-block; min-width: 3.4em; font-weight: bold; }

@@ -118,7 +118,7 @@ class EquationRow:
     derived_srepr: str | None
     residual_srepr: str | None
     #: a differing row's kind (pipeline.columns.DIFFERS_KINDS: paper_error, text_artefact,
-    #: convention); blank: not classified (or the row does not differ)
+    #: convention, unclear_from_text); blank: not classified (or the row does not differ)
     kind: str = ""
 
 
@@ -207,7 +207,7 @@ class ScoreRow:
     consistent / not_reproduced; ``claims``: upheld / not_upheld / not_checkable;
     ``line``: the ReScience-style one-line verdict; ``anchor``: the section id;
     ``summary``: the paper on the first page; ``differs``: the differing equations by kind
-    (paper_error, text_artefact, convention, and "" for unclassified).
+    (paper_error, text_artefact, convention, unclear_from_text, and "" for unclassified).
     """
 
     slug: str

@@ -220,7 +220,8 @@ def render_html(doc: Document) -> str:
         "verdicts.csv. Green: the paper and this reproduction agree. Red: they disagree (a "
         "number or claim is not reproduced; a printed equation is an error of the paper). "
         "Amber: a printed equation differs as an artefact of the text or a convention. Grey: "
-        'not checkable. See <a href="#introduction">the introduction</a> for the words.</p>\n'
+        "not checkable, or a printed equation differs where the seed text cannot tell whether "
+        'the paper or the OCR slipped. See <a href="#introduction">the introduction</a> for the words.</p>\n'
     )
     body += _toc(doc.sections, doc.appendices, numbers)
     body += sections

@@ -3,12 +3,15 @@
 The CSVs keep their tokens (``not_reproduced``, ``differs``, ``paper_error``); the HTML and
 the PDF show the words below, in one colour scheme (``tone``): green for what agrees, red
 for what fails (a printed equation is red only when it is an error of the paper), amber for
-a difference that is no error of the paper, grey for what cannot be checked.
+a difference that is no error of the paper, grey for what cannot be checked (and for a
+difference the seed text cannot tell to be the paper's or the OCR's).
 
 >>> word("not_reproduced"), word("upheld"), differs_word("text_artefact"), differs_word("")
 ('not reproduced', 'upheld', 'artefact of the text', 'unclassified')
 >>> tone("differs", "paper_error"), tone("differs", "convention"), tone("not_upheld")
 ('bad', 'partial', 'bad')
+>>> tone("differs", "unclear_from_text"), differs_word("unclear_from_text")
+('neutral', 'cannot tell from the text')
 >>> plain_words("rank 100 (not_reproduced); not_checkable: no value")
 'rank 100 (not reproduced); not checkable: no value'
 """
@@ -22,6 +25,7 @@ __all__ = [
     "CAUSE_WORDS",
     "DIFFERS_WORDS",
     "MARK_WORDS",
+    "NEUTRAL_DIFFERS",
     "TOKENS",
     "WORDS",
     "cause_short",
@@ -52,7 +56,10 @@ DIFFERS_WORDS = {
     "paper_error": "error of the paper",
     "text_artefact": "artefact of the text",
     "convention": "approximation or convention",
+    "unclear_from_text": "cannot tell from the text",
 }
+#: the kinds of a difference shown neutral (grey), neither an error nor a judged non-error
+NEUTRAL_DIFFERS = frozenset({"unclear_from_text"})
 #: the ``cause_kind`` of a failing verdict row (pipeline.columns.CAUSE_KINDS)
 CAUSE_WORDS = {
     "paper_error": "error of the paper",
@@ -96,9 +103,12 @@ def cause_short(kind: str) -> str:
 
 def tone(token: str, differs_kind: str = "") -> str:
     """``good``, ``bad``, ``partial`` or ``neutral``: the colour of a token. A ``differs`` is
-    bad only as an error of the paper; another difference is partial (amber)."""
+    bad only as an error of the paper; one the seed text cannot decide is neutral (grey); another
+    difference is partial (amber)."""
     token = token.strip()
     if token == "differs":
+        if differs_kind.strip() in NEUTRAL_DIFFERS:
+            return "neutral"
         return "bad" if differs_kind.strip() == "paper_error" else "partial"
     if token in _GOOD:
         return "good"

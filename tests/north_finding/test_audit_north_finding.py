@@ -12,6 +12,7 @@ import pytest
 import sympy as sp
 
 from derivations.checks import Check, run_check
+from derivations.discrepancies import inconsistencies
 from derivations.north_finding import azimuth, leveling
 from derivations.north_finding import printed as P
 from derivations.north_finding import symbols as s
@@ -24,20 +25,31 @@ pytestmark = pytest.mark.slow  # the module fixture runs the whole audit (~30 s)
 # The equations whose printed form differs from the derivation, with the kind of each
 # difference (the judgements in audit_*.py give the evidence). Asserted exactly: a change in a
 # derivation or a transcription that flips a status or a kind shows up here and must be reviewed.
-PAPER, TEXT = "paper_error", "text_artefact"
+PAPER, TEXT, UNCLEAR = "paper_error", "text_artefact", "unclear_from_text"
 EXPECTED_DIFFERS = {
     "16.b": PAPER, "21": PAPER, "22": PAPER, "23": TEXT, "37": PAPER, "40.d": PAPER,
-    "41": TEXT, "46": PAPER, "47.E": PAPER, "52": TEXT, "57": TEXT, "58": TEXT, "59": PAPER,
-    "64.A": PAPER, "65.b": PAPER, "67": PAPER, "68": PAPER, "69": PAPER,
+    "41": UNCLEAR, "46": PAPER, "47.E": PAPER, "52": TEXT, "57": TEXT, "58": UNCLEAR,
+    "59": UNCLEAR, "64.A": UNCLEAR, "65.b": UNCLEAR, "67": UNCLEAR, "68": PAPER, "69": PAPER,
 }  # fmt: skip
 EQ = re.compile(r"^(\d+)(\.[A-Za-z0-9]+)?$")
 
 
 @pytest.fixture(scope="module")
-def audit():
-    from derivations.north_finding.audit import audit_frame
+def outputs():
+    from derivations.checks import audit_outputs
+    from derivations.north_finding.audit import checks
 
-    return audit_frame()
+    return audit_outputs(checks())
+
+
+@pytest.fixture(scope="module")
+def audit(outputs):
+    return outputs[0]
+
+
+@pytest.fixture(scope="module")
+def records(outputs):
+    return outputs[1]
 
 
 def test_contract_columns_and_unique_equations(audit):
@@ -85,6 +97,31 @@ def test_expected_differs_and_their_kinds(audit):
     assert dict(zip(differs["equation"], differs["kind"], strict=True)) == EXPECTED_DIFFERS
 
 
+# the words a judgement opens with, by kind: the evidence for the kind comes first
+OPENERS = {
+    "paper_error": ("error of the paper: ",),
+    "text_artefact": ("artefact of the text: ",),
+    "unclear_from_text": ("cannot tell from the text: ",),
+    "convention": ("approximation of the paper: ", "notation of ", "sign convention "),
+}
+
+
+def test_each_kind_follows_from_what_the_seed_text_shows(audit, records):
+    """One rule for every paper: the kind of a difference is the one its discrepancy gives
+    (derivations.discrepancies), the same discrepancy never has two kinds, and the note opens
+    with the kind's evidence."""
+    differs = audit[audit["status"] == "differs"]
+    by_eq = {r["equation"]: r for r in records if r["status"] == "differs"}
+    assert set(by_eq) == set(differs["equation"])
+    rows = [
+        (e, by_eq[e]["discrepancy"], k)
+        for e, k in zip(differs["equation"], differs["kind"], strict=True)
+    ]
+    assert inconsistencies(rows) == []
+    for _, row in differs.iterrows():
+        assert row["note"].startswith(OPENERS[row["kind"]]), row["equation"]
+
+
 def test_the_derived_forms_that_the_pipeline_uses_match(audit):
     """The equations the estimators rely on, in their derived form, match the paper."""
     status = dict(zip(audit["equation"], audit["status"], strict=True))
@@ -127,7 +164,7 @@ def test_wrong_derivation_is_flagged(label, printed, derived_fn):
     scaled = derived * (1 + sp.Rational(1, 10**6))
     with pytest.raises(ValueError, match=rf"^eq\. {re.escape(label)}: printed and derived forms"):
         run_check(Check(label, printed=printed(), derived=scaled))
-    judged = {"differs_kind": "paper_error", "if_differs": "a judgement with its evidence"}
+    judged = {"discrepancy": "wrong_term", "if_differs": "a judgement with its evidence"}
     row = run_check(Check(label, printed=printed(), derived=scaled, **judged))
     assert (row.status, row.kind) == ("differs", "paper_error")
     assert row.residual not in ("", "0")

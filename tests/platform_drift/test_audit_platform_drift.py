@@ -5,28 +5,41 @@ The audit runs once (module fixture) through its CLI, which writes the results-c
 
 from __future__ import annotations
 
+import json
 import re
 
 import pandas as pd
 import pytest
 
+from derivations.discrepancies import inconsistencies
 from derivations.platform_drift import audit
 from pipeline.columns import AUDIT_COLUMNS, AUDIT_STATUSES, DIFFERS_KINDS
 
 # the equations whose printed form differs from the derivation, with the kind of each
 # difference (the judgements in audit_*.py give the evidence)
-PAPER, CONVENTION = "paper_error", "convention"
+PAPER, CONVENTION, UNCLEAR = "paper_error", "convention", "unclear_from_text"
 DIFFERS = {
-    "16": PAPER, "17": PAPER, "20": PAPER, "24": PAPER, "28": CONVENTION, "31.x": PAPER,
+    "16": UNCLEAR, "17": PAPER, "20": PAPER, "24": PAPER, "28": CONVENTION, "31.x": PAPER,
     "31.y": PAPER, "34": PAPER, "36.q": PAPER, "T2.5": CONVENTION,
 }  # fmt: skip
 
 
 @pytest.fixture(scope="module")
-def frame(tmp_path_factory) -> pd.DataFrame:
-    out = tmp_path_factory.mktemp("platform_drift") / "equation_audit.csv"
-    assert audit.main(["--out", str(out)]) == 0
-    return pd.read_csv(out, dtype=str, keep_default_na=False)
+def written(tmp_path_factory):
+    out = tmp_path_factory.mktemp("platform_drift")
+    argv = ["--out", str(out / "equation_audit.csv"), "--math", str(out / "equation_math.json")]
+    assert audit.main(argv) == 0
+    return out
+
+
+@pytest.fixture(scope="module")
+def frame(written) -> pd.DataFrame:
+    return pd.read_csv(written / "equation_audit.csv", dtype=str, keep_default_na=False)
+
+
+@pytest.fixture(scope="module")
+def records(written) -> list[dict]:
+    return json.loads((written / "equation_math.json").read_text())
 
 
 def test_columns_and_unique_keys(frame):
@@ -75,6 +88,31 @@ def test_not_checkable_rows_give_a_reason(frame):
 def test_exact_set_of_differing_equations_and_their_kinds(frame):
     differs = frame[frame["status"] == "differs"]
     assert dict(zip(differs["equation"], differs["kind"], strict=True)) == DIFFERS
+
+
+# the words a judgement opens with, by kind: the evidence for the kind comes first
+OPENERS = {
+    "paper_error": ("error of the paper: ",),
+    "text_artefact": ("artefact of the text: ",),
+    "unclear_from_text": ("cannot tell from the text: ",),
+    "convention": ("approximation of the paper: ", "notation of ", "sign convention "),
+}
+
+
+def test_each_kind_follows_from_what_the_seed_text_shows(frame, records):
+    """One rule for every paper: the kind of a difference is the one its discrepancy gives
+    (derivations.discrepancies), the same discrepancy never has two kinds, and the note opens
+    with the kind's evidence."""
+    differs = frame[frame["status"] == "differs"]
+    by_eq = {r["equation"]: r for r in records if r["status"] == "differs"}
+    assert set(by_eq) == set(differs["equation"])
+    rows = [
+        (e, by_eq[e]["discrepancy"], k)
+        for e, k in zip(differs["equation"], differs["kind"], strict=True)
+    ]
+    assert inconsistencies(rows) == []
+    for _, row in differs.iterrows():
+        assert row["note"].startswith(OPENERS[row["kind"]]), row["equation"]
 
 
 def test_residuals_of_the_paper_errors(frame):

@@ -1,40 +1,90 @@
-"""The equation-audit core (derivations/checks.py): every ``differs`` carries one of the kinds of
-``pipeline.columns.DIFFERS_KINDS``, and a difference without a kind is an error, not a row."""
+"""The equation-audit core (derivations/checks.py): every ``differs`` names what the seed text
+shows (a discrepancy of derivations.discrepancies), its kind (``pipeline.columns.DIFFERS_KINDS``)
+follows from that by one rule, and a difference without a discrepancy is an error, not a row."""
 
 from __future__ import annotations
 
 import pytest
 import sympy as sp
 
-from derivations.checks import Check, audit_frame, run_check
+from derivations.checks import Check, audit_frame, audit_outputs, run_check
+from derivations.discrepancies import DISCREPANCIES, inconsistencies, kind_of
 from pipeline.columns import AUDIT_COLUMNS, DIFFERS_KINDS
 
 x = sp.Symbol("x", real=True)
 
 
 def test_the_kinds_and_their_labels():
-    assert list(DIFFERS_KINDS) == ["paper_error", "text_artefact", "convention"]
+    assert list(DIFFERS_KINDS) == [
+        "paper_error",
+        "text_artefact",
+        "convention",
+        "unclear_from_text",
+    ]
     assert DIFFERS_KINDS["paper_error"] == "error of the paper"
     assert DIFFERS_KINDS["text_artefact"] == "artefact of the text"
     assert DIFFERS_KINDS["convention"] == "approximation or convention"
+    assert DIFFERS_KINDS["unclear_from_text"] == "cannot tell from the text"
     assert AUDIT_COLUMNS[AUDIT_COLUMNS.index("note") + 1] == "kind"
 
 
-# one synthetic check of each kind: a typo (a wrong factor), a scan artefact (a lost square),
-# a convention (a dropped higher-order term)
+# the rule: each discrepancy gives one kind, every kind is reached, and the order of the table
+# is the order of precedence (convention, then an error of the paper, then the text's)
+def test_the_rule_gives_each_discrepancy_one_allowed_kind():
+    assert {kind for kind, _ in DISCREPANCIES.values()} == set(DIFFERS_KINDS)
+    assert {d: kind_of(d) for d in DISCREPANCIES} == {
+        "approximation": "convention",
+        "notation": "convention",
+        "wrong_term": "paper_error",
+        "repeated_slip": "paper_error",
+        "visible_garble": "text_artefact",
+        "one_mark": "unclear_from_text",
+    }
+    for _, test in DISCREPANCIES.values():
+        assert len(test) > 60  # each kind's test is written out
+
+
+def test_two_rows_with_the_same_discrepancy_get_the_same_kind():
+    # the kind is not an argument of a check: it cannot be set apart from the discrepancy
+    with pytest.raises(TypeError):
+        Check("1", printed=x, derived=2 * x, differs_kind="paper_error", if_differs="e")  # type: ignore[call-arg]
+    frame, records = audit_outputs(
+        [
+            Check("58", printed=x, derived=2 * x, discrepancy="one_mark", if_differs="bar"),
+            Check("67", printed=x, derived=3 * x, discrepancy="one_mark", if_differs="bar"),
+            Check("22", printed=x, derived=4 * x, discrepancy="wrong_term", if_differs="l"),
+        ]
+    )
+    assert list(frame["kind"]) == ["unclear_from_text", "unclear_from_text", "paper_error"]
+    rows = [(r["equation"], r["discrepancy"], r["kind"]) for r in records]
+    assert inconsistencies(rows) == []
+    # ... and the check of the outputs fails on rows that break the rule
+    broken = [*rows[:1], ("67", "one_mark", "paper_error"), ("9", "", "text_artefact")]
+    assert inconsistencies(broken) == [
+        "eq. 67: one_mark gives unclear_from_text, the row says paper_error",
+        "eq. 9: no known discrepancy ('')",
+        "one_mark has two kinds: paper_error (67), unclear_from_text (58)",
+    ]
+
+
+# one synthetic check of each kind: a typo (a wrong factor), a scan artefact (a split line),
+# a convention (a dropped higher-order term), a lone mark (a lost square)
 @pytest.mark.parametrize(
-    ("kind", "printed", "derived", "residual"),
+    ("discrepancy", "kind", "printed", "derived", "residual"),
     [
-        ("paper_error", 2 * x, 3 * x, "-x"),
-        ("text_artefact", sp.cos(x), sp.cos(x) ** 2, "(1 - cos(x))*cos(x)"),
-        ("convention", 1 + x, sp.exp(x), "x - exp(x) + 1"),
+        ("wrong_term", "paper_error", 2 * x, 3 * x, "-x"),
+        ("visible_garble", "text_artefact", 1 / x + x, (1 + x) / x, "x - 1"),
+        ("approximation", "convention", 1 + x, sp.exp(x), "x - exp(x) + 1"),
+        ("one_mark", "unclear_from_text", sp.cos(x), sp.cos(x) ** 2, "(1 - cos(x))*cos(x)"),
     ],
 )
-def test_a_differs_row_carries_its_kind(kind, printed, derived, residual):
-    row = run_check(
-        Check("9", printed=printed, derived=derived, differs_kind=kind, if_differs="evidence")
+def test_a_differs_row_carries_its_kind(discrepancy, kind, printed, derived, residual):
+    check = Check(
+        "9", printed=printed, derived=derived, discrepancy=discrepancy, if_differs="evidence"
     )
+    row = run_check(check)
     assert (row.status, row.residual, row.note, row.kind) == ("differs", residual, "evidence", kind)
+    assert row.discrepancy == discrepancy
     assert row.as_dict() == {
         "equation": "9",
         "status": "differs",
@@ -49,32 +99,33 @@ def test_a_difference_without_a_kind_raises_naming_the_equation_and_the_kinds():
         run_check(Check("47.E", printed=2 * x, derived=3 * x))
     message = str(err.value)
     assert message.startswith("eq. 47.E: printed and derived forms differ (residual -x)")
-    for kind, label in DIFFERS_KINDS.items():
-        assert f"{kind} ({label})" in message
+    for discrepancy, (kind, _) in DISCREPANCIES.items():
+        assert f"{discrepancy} ({kind})" in message
 
 
 def test_a_long_residual_is_shortened_in_the_error():
     wide = sum(sp.Symbol(f"y_{k}") for k in range(200))
     with pytest.raises(ValueError, match=r"^eq\. 5: .*\.\.\.\) but the check records no") as err:
         run_check(Check("5", printed=wide, derived=0))
-    assert len(str(err.value)) < 500
+    assert len(str(err.value)) < 600  # the 200 symbols in full would take over 1000
 
 
 @pytest.mark.parametrize(
     ("kwargs", "message"),
     [
         (
-            {"differs_kind": "typo", "if_differs": "evidence"},
-            "eq. 12: differs_kind 'typo' is not one of paper_error (error of the paper), "
-            "text_artefact (artefact of the text), convention (approximation or convention)",
+            {"discrepancy": "typo", "if_differs": "evidence"},
+            "eq. 12: discrepancy 'typo' is not one of approximation (convention), notation "
+            "(convention), wrong_term (paper_error), repeated_slip (paper_error), "
+            "visible_garble (text_artefact), one_mark (unclear_from_text)",
         ),
         (
             {"if_differs": "evidence"},
-            "eq. 12: if_differs is given without differs_kind; give one of paper_error",
+            "eq. 12: if_differs is given without discrepancy; give one of approximation",
         ),
         (
-            {"differs_kind": "convention"},
-            "eq. 12: differs_kind 'convention' is given without if_differs, the judgement and "
+            {"discrepancy": "notation"},
+            "eq. 12: discrepancy 'notation' is given without if_differs, the judgement and "
             "its evidence",
         ),
     ],
@@ -87,7 +138,7 @@ def test_a_kind_and_its_evidence_go_together(kwargs, message):
 
 def test_match_and_not_checkable_rows_have_no_kind():
     match = run_check(
-        Check("1", printed=sp.sin(x) ** 2, derived=1 - sp.cos(x) ** 2, **_judged("paper_error"))
+        Check("1", printed=sp.sin(x) ** 2, derived=1 - sp.cos(x) ** 2, **_judged("wrong_term"))
     )
     assert (match.status, match.kind) == ("match", "")
     nc = run_check(Check("2", not_checkable="a definition"))
@@ -98,7 +149,7 @@ def test_the_audit_frame_writes_the_kind_column():
     frame = audit_frame(
         [
             Check("1", printed=x, derived=x),
-            Check("2", printed=2 * x, derived=x, **_judged("text_artefact")),
+            Check("2", printed=2 * x, derived=x, **_judged("visible_garble")),
             Check("3", not_checkable="absent from the seed text"),
         ]
     )
@@ -106,8 +157,8 @@ def test_the_audit_frame_writes_the_kind_column():
     assert list(frame["kind"]) == ["", "text_artefact", ""]
 
 
-def _judged(kind: str) -> dict[str, str]:
-    return {"differs_kind": kind, "if_differs": "a judgement with its evidence"}
+def _judged(discrepancy: str) -> dict[str, str]:
+    return {"discrepancy": discrepancy, "if_differs": "a judgement with its evidence"}
 
 
 # the simplify budget of a residual's text is CPU time, so the text does not depend on the load

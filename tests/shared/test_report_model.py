@@ -349,3 +349,25 @@ def test_published_tables_show_tolerance_and_cause(tmp_path):
     assert row.rows[0][3:] == ["+-20% of 1", "not_reproduced", "within the tolerance", "the trajectory is not published"]  # fmt: skip
     # the HTML's last column: the row's note and the cause's full text
     assert row.notes == ["cause: The paper does not publish the trajectory (3 banks in ours)."]
+
+
+def test_a_differing_equation_is_stated_without_repeating_its_kind():
+    """The statement after "Eq. N (kind):" drops the kind's words where the note opens with
+    them; another opening stays."""
+    from pipeline.report.equations import equation_section
+    from pipeline.report.model import EquationRow
+
+    def row(eq: str, kind: str, note: str) -> EquationRow:
+        return EquationRow("p", eq, "differs", note, "x", *([None] * 6), kind=kind)
+
+    rows = [
+        row("1", "paper_error", "error of the paper: a factor l is missing; details"),
+        row("2", "unclear_from_text", "cannot tell from the text: one exponent, once"),
+        row("3", "convention", "approximation of the paper: small angles"),
+    ]
+    (_, bullets) = equation_section("p", rows, {"differs": 3}).blocks
+    assert bullets.items == [
+        "Eq. 1 (error of the paper): a factor l is missing",
+        "Eq. 2 (cannot tell from the text): one exponent, once",
+        "Eq. 3 (approximation or convention): approximation of the paper: small angles",
+    ]

@@ -267,12 +267,14 @@ def test_one_vocabulary_and_its_colours():
     assert plain_words("not_upheld (not_checkable)") == "not upheld (not checkable)"
     assert tone("differs", "paper_error") == "bad"
     assert {tone("differs", k) for k in ("text_artefact", "convention", "")} == {"partial"}
+    assert tone("differs", "unclear_from_text") == "neutral"  # grey: not red, not amber
     assert differs_word("convention") == "approximation or convention"
     import pipeline.columns as columns
 
     if hasattr(columns, "DIFFERS_KINDS"):  # the audit's kinds all have their words
-        assert {differs_word(k) for k in columns.DIFFERS_KINDS} <= {
-            "error of the paper", "artefact of the text", "approximation or convention"
+        assert {differs_word(k) for k in columns.DIFFERS_KINDS} == {
+            "error of the paper", "artefact of the text", "approximation or convention",
+            "cannot tell from the text",
         }  # fmt: skip
 
 

@@ -32,7 +32,7 @@ def checks() -> list[Check]:
             "4",
             printed=2 * sp.pi * sp.sqrt(l / g) * (1 + theta0**2 / 8),
             derived=period_first_order(),
-            differs_kind="paper_error",
+            discrepancy="wrong_term",
             if_differs="error of the paper: the amplitude term is theta_0^2/16, not /8 (the "
             "series of the complete elliptic integral, 1 + theta_0^2/16 + ...)",
         ),
