@@ -186,6 +186,6 @@ def stationary_radius_rates(lat: sp.Expr = s.lat, psi: sp.Expr = s.psi) -> dict[
     Inertial velocity at rest: ^{mN} v = omega_ie x [0, 0, R]; in s (level, azimuth psi):
     [u, v] = first two rows of ^s_{mN}C ^{mN} v, z = R; omega_y = u/z, omega_x = -v/z.
     """
-    v_mN = kin.earth_rate_mN(s.omega_e, lat).cross(sp.Matrix([0, 0, s.R]))
+    v_mN = kin.velocity_at_rest_mN(s.omega_e, lat, s.R)
     v_s = kin.mat_s_mN(psi, 0, 0) * v_mN
     return {"omega_x": sp.simplify(-v_s[1] / s.R), "omega_y": sp.simplify(v_s[0] / s.R)}
