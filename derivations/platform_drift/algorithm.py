@@ -45,6 +45,21 @@ DEFINITIONS = {
 }
 
 
+def known_altitude(rho: sp.Expr = s.R_G) -> dict[str, sp.Expr]:
+    """The vertical channel of the algorithm: the known radius |^s r_EB| = rho gives z (the
+    positive root of x^2 + y^2 + z^2 = rho^2) and, at constant rho, z_dot from its time
+    derivative, in x, y, z, x_dot, y_dot."""
+    xf, yf, zf = (sp.Function(n)(s.t) for n in ("X", "Y", "Z"))
+    constraint = xf**2 + yf**2 + zf**2 - rho**2
+    z_dot = sp.solve(constraint.diff(s.t), zf.diff(s.t))[0]
+    z_dot = z_dot.subs({xf.diff(s.t): s.x_dot, yf.diff(s.t): s.y_dot}).subs(
+        {xf: s.x, yf: s.y, zf: s.z}
+    )
+    roots = sp.solve(constraint.subs({xf: s.x, yf: s.y, zf: s.z}), s.z)
+    z = next(r for r in roots if r.subs({s.x: 0, s.y: 0}) == rho)
+    return {"z": z, "z_dot": sp.simplify(z_dot)}
+
+
 def gravity_s() -> sp.Matrix:
     """Spherical mass attraction ``-GM r / |r|^3`` in s (the assumption of eq. 15)."""
     r_vec = sp.Matrix([s.x, s.y, s.z])

@@ -119,6 +119,7 @@ def functions() -> list[GeneratedFunction]:
     f17 = sf.specific_force_s()
     t20 = al.tilts_0m_exact()
     rates0 = al.rates_0m_exact()
+    ka = alg.known_altitude()
     j27 = al.tilt_rates_0p()
     c1, c3 = dr.channel1(), dr.channel3()
     t2 = sch.table2()
@@ -163,6 +164,20 @@ def functions() -> list[GeneratedFunction]:
             (s.phi_x, s.phi_y, s.R_G),
             (alg.DEFINITIONS[s.x], alg.DEFINITIONS[s.y]),
             "Eq. 14 solved for the position: x = -R_G phi_y, y = R_G phi_x. Returns (x, y).",
+        ),
+        _fn(
+            "known_altitude_z",
+            (s.x, s.y, s.R_G),
+            ka["z"],
+            "Vertical channel, known altitude: z = sqrt(R_G^2 - x^2 - y^2) from |^s r_EB| = R_G.",
+            cse=False,
+        ),
+        _fn(
+            "known_altitude_z_dot",
+            (s.x, s.y, s.z, s.x_dot, s.y_dot),
+            ka["z_dot"],
+            "Vertical channel, known constant altitude: z_dot = -(x x_dot + y y_dot)/z.",
+            cse=False,
         ),
         _fn(
             "platform_commands_rates",

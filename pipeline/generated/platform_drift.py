@@ -30,7 +30,7 @@ def _shaped(shape, *outs):
     return np.stack(arrays, axis=-1).reshape(arrays[0].shape + shape)
 
 
-__all__ = ['motion_rates', 'gravity_spherical', 'radius_rates_from_velocity', 'tilts_from_position', 'position_from_tilts', 'platform_commands_rates', 'oscillation_rates', 'position_rates', 'specific_force_platform', 'specific_force_platform_linear', 'specific_force_stationary', 'tilt_kinematics_stationary', 'k_sh_stationary', 'alpha_deflection', 'alignment_tilts', 'r_alignment', 'alignment_rates', 'nav_initial_tilt_rates', 'error_ch1', 'error_ch3', 'oscillation_period', 'schuler_period', 'table2_accel_bias', 'table2_initial_tilt', 'table2_scale_factor', 'table2_gyro_drift', 'table2_azimuth_drift', 'table2_initial_velocity', 'table2_initial_azimuth', 'strapdown_velocity_rates', 'course_rate', 'velocity_at_rest', 'ground_velocity']
+__all__ = ['motion_rates', 'gravity_spherical', 'radius_rates_from_velocity', 'tilts_from_position', 'position_from_tilts', 'known_altitude_z', 'known_altitude_z_dot', 'platform_commands_rates', 'oscillation_rates', 'position_rates', 'specific_force_platform', 'specific_force_platform_linear', 'specific_force_stationary', 'tilt_kinematics_stationary', 'k_sh_stationary', 'alpha_deflection', 'alignment_tilts', 'r_alignment', 'alignment_rates', 'nav_initial_tilt_rates', 'error_ch1', 'error_ch3', 'oscillation_period', 'schuler_period', 'table2_accel_bias', 'table2_initial_tilt', 'table2_scale_factor', 'table2_gyro_drift', 'table2_azimuth_drift', 'table2_initial_velocity', 'table2_initial_azimuth', 'strapdown_velocity_rates', 'course_rate', 'velocity_at_rest', 'ground_velocity']
 
 #: Functions the pipeline does not call, each with the reason it is generated.
 AUDIT_ONLY = {
@@ -95,6 +95,18 @@ def position_from_tilts(phi_x, phi_y, R_G):
     out0 = -R_G*phi_y
     out1 = R_G*phi_x
     return _broadcast(out0, out1)
+
+
+def known_altitude_z(x, y, R_G):
+    """Vertical channel, known altitude: z = sqrt(R_G^2 - x^2 - y^2) from |^s r_EB| = R_G."""
+    out0 = np.sqrt(R_G**2 - x**2 - y**2)
+    return out0
+
+
+def known_altitude_z_dot(x, y, z, x_dot, y_dot):
+    """Vertical channel, known constant altitude: z_dot = -(x x_dot + y y_dot)/z."""
+    out0 = (-x*x_dot - y*y_dot)/z
+    return out0
 
 
 def platform_commands_rates(f1, f2, z):

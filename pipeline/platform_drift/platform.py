@@ -156,9 +156,9 @@ def make_rhs(traj: Trajectory, drift: np.ndarray):
         lat2, psi2 = Y[:, 18], Y[:, 20]
         # accelerometers: true specific force in the physical platform frame
         f = traj.specific_force_in(tr, C)
-        # algorithm: known altitude gives z (eq. 14 for x, y)
+        # algorithm: known altitude gives z = sqrt(rho^2 - x^2 - y^2) (eq. 14 for x, y)
         x, yy = gen.position_from_tilts(fx, fy, rg)
-        z = np.sqrt(rho * rho - x * x - yy * yy)
+        z = gen.known_altitude_z(x, yy, rho)
         p_dot, q_dot = gen.platform_commands_rates(f[:, 0], f[:, 1], z)  # eq. 12
         r = r_cmd
         # eq. 15: the tilt rates do not depend on z_dot; z_dot follows from them
@@ -166,7 +166,8 @@ def make_rhs(traj: Trajectory, drift: np.ndarray):
             wx, wy, fx, fy, p, q, r, p_dot, q_dot, z, 0.0, rg, gm
         )
         x_dot, y_dot = gen.position_from_tilts(fx_dot, fy_dot, rg)  # eq. 14, differentiated
-        z_dot = -(x * x_dot + yy * y_dot) / z
+        # known constant altitude: z_dot = -(x x_dot + y y_dot) / z
+        z_dot = gen.known_altitude_z_dot(x, yy, z, x_dot, y_dot)
         wx_dot, wy_dot, _, _ = gen.oscillation_rates(
             wx, wy, fx, fy, p, q, r, p_dot, q_dot, z, z_dot, rg, gm
         )

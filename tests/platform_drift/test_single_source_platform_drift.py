@@ -9,7 +9,9 @@
 * ``oscillation_period`` (eq. 30) gives ``schuler_period`` at k_sh = g/R, symbolically;
 * the strapdown velocity equation (eq. 10 in NED) is the textbook vector form, symbolically
   and numerically (numpy cross products); the ground velocity is v - omega x r;
-* ``trajectory.eq2_angles`` inverts eq. 2 (the generated ``frames.mat_tn``).
+* ``trajectory.eq2_angles`` inverts eq. 2 (the generated ``frames.mat_tn``);
+* the generated course rate and the body rate are the derivatives of the truth path (central
+  differences); the known-altitude z and z_dot keep |r| = R_G (symbolically).
 """
 
 from __future__ import annotations
@@ -170,3 +172,14 @@ def test_course_rate_and_body_rate_are_derivatives_of_the_path():
         w_skew = traj.body_i(traj.at(t)).T @ c_dot  # [omega_ib^b x]
         w_fd = np.array([w_skew[2, 1], w_skew[0, 2], w_skew[1, 0]])
         np.testing.assert_allclose(traj.body_rate(traj.at(t)), w_fd, rtol=0, atol=1e-10)
+
+
+def test_known_altitude_keeps_the_radius():
+    """z of the vertical channel puts r on the sphere |r| = R_G; z_dot is d z / dt along x(t),
+    y(t) (an independent differentiation of the explicit root)."""
+    ka = al.alg.known_altitude()
+    assert sp.simplify(s.x**2 + s.y**2 + ka["z"] ** 2 - s.R_G**2) == 0
+    xf, yf = sp.Function("X")(s.t), sp.Function("Y")(s.t)
+    direct = ka["z"].subs({s.x: xf, s.y: yf}).diff(s.t)
+    direct = direct.subs({xf.diff(s.t): s.x_dot, yf.diff(s.t): s.y_dot, xf: s.x, yf: s.y})
+    assert sp.simplify(direct - ka["z_dot"].subs(s.z, ka["z"])) == 0
