@@ -318,6 +318,9 @@ SAMPLE = {
     "R_G": (0.5, 2.0),
     "z": (0.5, 2.0),
     "GM": (0.5, 2.0),
+    # x, y small against R_G, so that the known-altitude z = sqrt(R_G^2 - x^2 - y^2) is real
+    "x": (0.05, 0.3),
+    "y": (0.05, 0.3),
 }
 
 
@@ -337,6 +340,7 @@ def test_generated_equals_lambdified_derivation(fn):
     got = [got] if isinstance(fn.exprs, sp.Basic) else list(got)
     want = [np.broadcast_to(np.asarray(v, dtype=float), (n,)) for v in lam(*points)]
     for g_, w_ in zip(got, want, strict=True):
+        assert np.all(np.isfinite(w_)), f"{fn.name}: sample outside the function's domain"
         np.testing.assert_allclose(g_, w_, rtol=1e-10, atol=1e-13)
 
 
