@@ -45,6 +45,21 @@ DEFINITIONS = {
 }
 
 
+def known_altitude(rho: sp.Expr = s.R_G) -> dict[str, sp.Expr]:
+    """The vertical channel of the algorithm: the known radius |^s r_EB| = rho gives z (the
+    positive root of x^2 + y^2 + z^2 = rho^2) and, at constant rho, z_dot from its time
+    derivative, in x, y, z, x_dot, y_dot."""
+    xf, yf, zf = (sp.Function(n)(s.t) for n in ("X", "Y", "Z"))
+    constraint = xf**2 + yf**2 + zf**2 - rho**2
+    z_dot = sp.solve(constraint.diff(s.t), zf.diff(s.t))[0]
+    z_dot = z_dot.subs({xf.diff(s.t): s.x_dot, yf.diff(s.t): s.y_dot}).subs(
+        {xf: s.x, yf: s.y, zf: s.z}
+    )
+    roots = sp.solve(constraint.subs({xf: s.x, yf: s.y, zf: s.z}), s.z)
+    z = next(r for r in roots if r.subs({s.x: 0, s.y: 0}) == rho)
+    return {"z": z, "z_dot": sp.simplify(z_dot)}
+
+
 def gravity_s() -> sp.Matrix:
     """Spherical mass attraction ``-GM r / |r|^3`` in s (the assumption of eq. 15)."""
     r_vec = sp.Matrix([s.x, s.y, s.z])
@@ -186,6 +201,6 @@ def stationary_radius_rates(lat: sp.Expr = s.lat, psi: sp.Expr = s.psi) -> dict[
     Inertial velocity at rest: ^{mN} v = omega_ie x [0, 0, R]; in s (level, azimuth psi):
     [u, v] = first two rows of ^s_{mN}C ^{mN} v, z = R; omega_y = u/z, omega_x = -v/z.
     """
-    v_mN = kin.earth_rate_mN(s.omega_e, lat).cross(sp.Matrix([0, 0, s.R]))
+    v_mN = kin.velocity_at_rest_mN(s.omega_e, lat, s.R)
     v_s = kin.mat_s_mN(psi, 0, 0) * v_mN
     return {"omega_x": sp.simplify(-v_s[1] / s.R), "omega_y": sp.simplify(v_s[0] / s.R)}

@@ -8,6 +8,10 @@
 * eqs. 23-24: the third channel at 0-: psi_dot = 0 in eq. 19 gives r(0-) = omega_e sin(phi)
   - d_r with the disturbance d_r = phi_x q - omega_e cos cos(psi) phi_y, and q(0-) from
   phi_y_dot = 0;
+* :func:`rates_0m_exact`: the exact p(0-), q(0-), r(0-) that hold a platform with tilts
+  phi_x, phi_y and azimuth psi at rest (the exact kinematics behind eq. 19 with
+  phi_dot = psi_dot = 0, eq. 22); eq. 24 and q(0-) are their first-order forms (the tests
+  prove it symbolically); ``platform.initial_state`` calls the generated exact form;
 * eq. 27: the jumps at 0+: eq. 19 with r -> r(0+) = b_g3 (third gyro commanded zero, eq. 25)
   and the uncompensated drifts b_g1, b_g2 added to p, q (the paper's assumption that drift
   compensation is lost at 0+); phi, psi, p, q do not jump (Table 1).
@@ -31,6 +35,7 @@ __all__ = [
     "disturbance_dr",
     "q_0m",
     "r_0m",
+    "rates_0m_exact",
     "tilt_rates_0p",
 ]
 
@@ -88,6 +93,18 @@ def disturbance_dr_0m(first_order: bool = True) -> sp.Expr:
 def r_0m() -> sp.Expr:
     """Eq. 24: r(0-) = omega_e sin(phi_i) - d_r from psi_dot(0-) = 0 (eq. 22) in eq. 19."""
     return sp.expand(s.omega_e * sp.sin(s.lat) - disturbance_dr_0m(first_order=True))
+
+
+@functools.cache
+def rates_0m_exact() -> dict[str, sp.Expr]:
+    """p(0-), q(0-), r(0-) exactly: the exact stationary kinematics (behind eq. 19) with
+    phi_x_dot = phi_y_dot = psi_dot = 0 (eqs. 20, 22: alignment holds the platform still),
+    solved for the platform rates. Exact in the tilts phi_x, phi_y and the azimuth psi."""
+    ex = alg.tilt_kinematics_exact_stationary()
+    eqs = [ex[k] for k in ("phi_x_dot", "phi_y_dot", "psi_dot")]
+    sol = sp.solve(eqs, [s.p, s.q, s.r], dict=True)
+    assert len(sol) == 1
+    return {str(k): sp.simplify(sp.expand_trig(sol[0][k])) for k in (s.p, s.q, s.r)}
 
 
 def tilt_rates_0p() -> dict[str, sp.Expr]:

@@ -31,6 +31,7 @@ __all__ = [
     "tilt_error_equations",
     "model_rhs",
     "homogeneous_solution",
+    "oscillation_period",
     "channel1",
     "channel3",
     "channel3_aw",
@@ -113,6 +114,14 @@ def homogeneous_solution(phi0: sp.Expr = s.B, phidot0: sp.Expr | None = None) ->
     if phidot0 is None:
         phidot0 = s.A * sp.sqrt(s.k_sh)
     return _solve(sp.S.Zero, phi0, phidot0)
+
+
+def oscillation_period() -> sp.Expr:
+    """Period of eq. 30's solution in k_sh: 2 pi / sqrt(k_sh) (eq. 30's one frequency)."""
+    sol = homogeneous_solution()
+    freqs = {a.args[0].coeff(s.t) for a in sol.atoms(sp.sin, sp.cos) if a.has(s.t)}
+    assert len(freqs) == 1, freqs
+    return sp.simplify(2 * sp.pi / freqs.pop())
 
 
 @functools.cache

@@ -1,7 +1,8 @@
 """Generate ``pipeline/generated/platform_drift.py`` from the derivations.
 
 Run ``python -m derivations.platform_drift.generate``; ``--check`` exits non-zero if the
-committed file is stale. Where the printed equation differs from the derivation (eqs. 16,
+committed file is stale. The strapdown comparator's velocity equation and the Earth-relative
+velocity (derivations/platform_drift/strapdown.py) are generated here too. Where the printed equation differs from the derivation (eqs. 16,
 17, 20, 24, 36, Table 2 row 5; see the audit), the generated function is the derived one.
 """
 
@@ -18,6 +19,7 @@ from derivations.platform_drift import drift as dr
 from derivations.platform_drift import kinematics as kin
 from derivations.platform_drift import schuler as sch
 from derivations.platform_drift import specific_force as sf
+from derivations.platform_drift import strapdown as sdn
 from derivations.platform_drift import symbols as s
 
 OUTPUT = Path(__file__).resolve().parents[2] / "pipeline" / "generated" / "platform_drift.py"
@@ -69,8 +71,9 @@ AUDIT_ONLY = {
         "plumb vertical) instead"
     ),
     "r_alignment": (
-        "eq. 24; NOT YET CALLED (issue 12 open): platform.initial_state sets p, q numerically "
-        "and r = 0 (eq. 25)"
+        "eq. 24, the first-order form (in the tilts, alpha, theta_F) of alignment_rates' r, "
+        "which platform.initial_state calls (equal to first order: tests/platform_drift); "
+        "navigation commands r = 0 (eq. 25)"
     ),
     "nav_initial_tilt_rates": (
         "eq. 27, initial tilt rates of the analytic solution (eqs. 32, 36), used in the derivation"
@@ -115,6 +118,8 @@ def functions() -> list[GeneratedFunction]:
     f_exact = sf.specific_force_s_exact()
     f17 = sf.specific_force_s()
     t20 = al.tilts_0m_exact()
+    rates0 = al.rates_0m_exact()
+    ka = alg.known_altitude()
     j27 = al.tilt_rates_0p()
     c1, c3 = dr.channel1(), dr.channel3()
     t2 = sch.table2()
@@ -159,6 +164,20 @@ def functions() -> list[GeneratedFunction]:
             (s.phi_x, s.phi_y, s.R_G),
             (alg.DEFINITIONS[s.x], alg.DEFINITIONS[s.y]),
             "Eq. 14 solved for the position: x = -R_G phi_y, y = R_G phi_x. Returns (x, y).",
+        ),
+        _fn(
+            "known_altitude_z",
+            (s.x, s.y, s.R_G),
+            ka["z"],
+            "Vertical channel, known altitude: z = sqrt(R_G^2 - x^2 - y^2) from |^s r_EB| = R_G.",
+            cse=False,
+        ),
+        _fn(
+            "known_altitude_z_dot",
+            (s.x, s.y, s.z, s.x_dot, s.y_dot),
+            ka["z_dot"],
+            "Vertical channel, known constant altitude: z_dot = -(x x_dot + y y_dot)/z.",
+            cse=False,
         ),
         _fn(
             "platform_commands_rates",
@@ -280,6 +299,15 @@ def functions() -> list[GeneratedFunction]:
             "    + alpha omega_e cos(lat), which the paper drops).",
         ),
         _fn(
+            "alignment_rates",
+            (s.omega_e, s.lat, s.psi, s.phi_x, s.phi_y),
+            (rates0["p"], rates0["q"], rates0["r"]),
+            "Exact platform rates at the end of alignment, (p(0-), q(0-), r(0-)): the rates that\n"
+            "    hold a platform with tilts phi_x, phi_y and azimuth psi still at rest (eq. 19\n"
+            "    exact, phi_dot = psi_dot = 0; eq. 24 is r(0-) to first order). phi_x, phi_y, psi\n"
+            "    are the angles of eq. 2. Returns (p, q, r).",
+        ),
+        _fn(
             "nav_initial_tilt_rates",
             (s.b_g1, s.b_g2, s.b_g3, s.r0m, s.phi_x, s.phi_y),
             (j27["phi_x_dot"], j27["phi_y_dot"]),
@@ -288,9 +316,10 @@ def functions() -> list[GeneratedFunction]:
         _fn(
             "error_ch1",
             (s.t, s.b_g1, s.k_sh),
-            c1["norm"],
-            "Position error angle (rad) for a constant level-gyro drift b_g1 at rest (eq. 32):\n"
-            "    |b_g1| (t - sin(sqrt(k_sh) t) / sqrt(k_sh)). Multiply by R for distance.",
+            (c1["int_p"], c1["int_q"]),
+            "Integrated rate errors (int p_merror, int q_merror) in rad for a constant level-gyro\n"
+            "    drift b_g1 at rest (eq. 32): (-b_g1 t + b_g1 sin(sqrt(k_sh) t)/sqrt(k_sh), 0);\n"
+            "    their norm, times R, is the position error.",
         ),
         _fn(
             "error_ch3",
@@ -301,6 +330,13 @@ def functions() -> list[GeneratedFunction]:
             "    -alpha sin(psi0) b_g3 sin(sqrt(k_sh) t)/sqrt(k_sh); the paper prints '+').\n"
             "    Requires omega_e^2 sin^2(lat0) != k_sh.",
             {s.lat: "lat0"},
+        ),
+        _fn(
+            "oscillation_period",
+            (s.k_sh,),
+            dr.oscillation_period(),
+            "Period of the tilt oscillation of eq. 30, 2 pi / sqrt(k_sh) (the Schuler period for\n"
+            "    the k_sh of eq. 28).",
         ),
         _fn(
             "schuler_period",
@@ -360,7 +396,7 @@ def functions() -> list[GeneratedFunction]:
             {s.phi_z0: "phi_z0", s.v_y: "v_cross"},
         ),
     ]
-    return fns
+    return fns + sdn.functions(NAMES)
 
 
 def source() -> str:

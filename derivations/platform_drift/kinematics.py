@@ -45,6 +45,7 @@ __all__ = [
     "transport_rate_mN",
     "earth_rate_mN",
     "azimuth_rate_mi",
+    "velocity_at_rest_mN",
     "coriolis_theorem",
     "position_rates_s",
     "velocity_equation_general",
@@ -124,6 +125,14 @@ def mat_mi_s(phi_y: sp.Expr = s.phi_y, phi_x: sp.Expr = s.phi_x) -> sp.Matrix:
 def earth_rate_mN(omega_e: sp.Expr = s.omega_e, lat: sp.Expr = s.lat) -> sp.Matrix:
     """``^{mN} omega_ie = NWU [omega^{EI}]^N`` (eq. 4): [omega_e cos, 0, omega_e sin]."""
     return NWU * frames.earth_rate_n(omega_e, lat)
+
+
+def velocity_at_rest_mN(
+    omega_e: sp.Expr = s.omega_e, lat: sp.Expr = s.lat, R: sp.Expr = s.R
+) -> sp.Matrix:
+    """Inertial velocity of a vehicle at rest, in m_N: omega_ie x [0, 0, R] (eq. 8 with
+    D_e r = 0): [0, -omega_e R cos(lat), 0], i.e. omega_e R cos(lat) toward the east."""
+    return earth_rate_mN(omega_e, lat).cross(sp.Matrix([0, 0, R]))
 
 
 @functools.cache

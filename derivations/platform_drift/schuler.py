@@ -113,9 +113,6 @@ def table2() -> dict[str, sp.Expr | tuple[sp.Expr, sp.Expr]]:
 
 def schuler_period(g: sp.Expr = s.g, R: sp.Expr = s.R) -> sp.Expr:
     """Period of eq. 29's solution (eq. 30) with k_sh = g/R (no Earth rate): 2 pi / sqrt(g/R)."""
-    from derivations.platform_drift.drift import homogeneous_solution
+    from derivations.platform_drift.drift import oscillation_period
 
-    sol = homogeneous_solution().subs(s.k_sh, g / R)
-    freqs = {a.args[0].coeff(s.t) for a in sol.atoms(sp.sin, sp.cos) if a.has(s.t)}
-    assert len(freqs) == 1, freqs
-    return sp.simplify(2 * sp.pi / freqs.pop())
+    return sp.simplify(oscillation_period().subs(s.k_sh, g / R))

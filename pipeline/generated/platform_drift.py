@@ -23,7 +23,14 @@ def _broadcast(*outs):
         for a in arrays
     )
 
-__all__ = ['motion_rates', 'gravity_spherical', 'radius_rates_from_velocity', 'tilts_from_position', 'position_from_tilts', 'platform_commands_rates', 'oscillation_rates', 'position_rates', 'specific_force_platform', 'specific_force_platform_linear', 'specific_force_stationary', 'tilt_kinematics_stationary', 'k_sh_stationary', 'alpha_deflection', 'alignment_tilts', 'r_alignment', 'nav_initial_tilt_rates', 'error_ch1', 'error_ch3', 'schuler_period', 'table2_accel_bias', 'table2_initial_tilt', 'table2_scale_factor', 'table2_gyro_drift', 'table2_azimuth_drift', 'table2_initial_velocity', 'table2_initial_azimuth']
+
+def _shaped(shape, *outs):
+    """The broadcast outputs as one array of shape ``broadcast + shape``, filled row by row."""
+    arrays = _broadcast(*outs)
+    return np.stack(arrays, axis=-1).reshape(arrays[0].shape + shape)
+
+
+__all__ = ['motion_rates', 'gravity_spherical', 'radius_rates_from_velocity', 'tilts_from_position', 'position_from_tilts', 'known_altitude_z', 'known_altitude_z_dot', 'platform_commands_rates', 'oscillation_rates', 'position_rates', 'specific_force_platform', 'specific_force_platform_linear', 'specific_force_stationary', 'tilt_kinematics_stationary', 'k_sh_stationary', 'alpha_deflection', 'alignment_tilts', 'r_alignment', 'alignment_rates', 'nav_initial_tilt_rates', 'error_ch1', 'error_ch3', 'oscillation_period', 'schuler_period', 'table2_accel_bias', 'table2_initial_tilt', 'table2_scale_factor', 'table2_gyro_drift', 'table2_azimuth_drift', 'table2_initial_velocity', 'table2_initial_azimuth', 'strapdown_velocity_rates', 'course_rate', 'velocity_at_rest', 'ground_velocity']
 
 #: Functions the pipeline does not call, each with the reason it is generated.
 AUDIT_ONLY = {
@@ -33,7 +40,7 @@ AUDIT_ONLY = {
     'specific_force_stationary': 'eq. 18 (eq. 17 at rest), for the audit and the notebook',
     'tilt_kinematics_stationary': 'eq. 19, first-order kinematics behind eqs. 28-36; the simulation integrates the DCM',
     'alignment_tilts': 'eq. 20, first order; platform.initial_state levels the platform exactly (mass or plumb vertical) instead',
-    'r_alignment': 'eq. 24; NOT YET CALLED (issue 12 open): platform.initial_state sets p, q numerically and r = 0 (eq. 25)',
+    'r_alignment': "eq. 24, the first-order form (in the tilts, alpha, theta_F) of alignment_rates' r, which platform.initial_state calls (equal to first order: tests/platform_drift); navigation commands r = 0 (eq. 25)",
     'nav_initial_tilt_rates': 'eq. 27, initial tilt rates of the analytic solution (eqs. 32, 36), used in the derivation',
     'table2_accel_bias': 'Table 2 closed form, audited and checked against the Schuler loop by the tests; the strapdown curves are simulated (strapdown.py), not evaluated from Table 2',
     'table2_initial_tilt': 'Table 2 closed form, audited and checked against the Schuler loop by the tests; the strapdown curves are simulated (strapdown.py), not evaluated from Table 2',
@@ -88,6 +95,18 @@ def position_from_tilts(phi_x, phi_y, R_G):
     out0 = -R_G*phi_y
     out1 = R_G*phi_x
     return _broadcast(out0, out1)
+
+
+def known_altitude_z(x, y, R_G):
+    """Vertical channel, known altitude: z = sqrt(R_G^2 - x^2 - y^2) from |^s r_EB| = R_G."""
+    out0 = np.sqrt(R_G**2 - x**2 - y**2)
+    return out0
+
+
+def known_altitude_z_dot(x, y, z, x_dot, y_dot):
+    """Vertical channel, known constant altitude: z_dot = -(x x_dot + y y_dot)/z."""
+    out0 = (-x*x_dot - y*y_dot)/z
+    return out0
 
 
 def platform_commands_rates(f1, f2, z):
@@ -256,6 +275,27 @@ def r_alignment(omega_e, lat, psi, alpha, theta_F1, theta_F2):
     return out0
 
 
+def alignment_rates(omega_e, lat, psi, phi_x, phi_y):
+    """Exact platform rates at the end of alignment, (p(0-), q(0-), r(0-)): the rates that
+    hold a platform with tilts phi_x, phi_y and azimuth psi still at rest (eq. 19
+    exact, phi_dot = psi_dot = 0; eq. 24 is r(0-) to first order). phi_x, phi_y, psi
+    are the angles of eq. 2. Returns (p, q, r)."""
+    _x0 = np.sin(lat)
+    _x1 = np.sin(phi_y)
+    _x2 = np.cos(lat)
+    _x3 = np.cos(phi_y)
+    _x4 = np.cos(psi)
+    _x5 = np.sin(phi_x)
+    _x6 = _x0*_x3
+    _x7 = np.cos(phi_x)
+    _x8 = _x2*np.sin(psi)
+    _x9 = _x1*_x2*_x4
+    out0 = omega_e*(-_x0*_x1 + _x2*_x3*_x4)
+    out1 = omega_e*(_x5*_x6 + _x5*_x9 - _x7*_x8)
+    out2 = omega_e*(_x5*_x8 + _x6*_x7 + _x7*_x9)
+    return _broadcast(out0, out1, out2)
+
+
 def nav_initial_tilt_rates(b_g1, b_g2, b_g3, r_0m, phi_x, phi_y):
     """Tilt rates at the start of navigation (eq. 27): (phi_x_dot(0+), phi_y_dot(0+))."""
     out0 = b_g1 + b_g3*phi_y - phi_y*r_0m
@@ -264,11 +304,13 @@ def nav_initial_tilt_rates(b_g1, b_g2, b_g3, r_0m, phi_x, phi_y):
 
 
 def error_ch1(t, b_g1, k_sh):
-    """Position error angle (rad) for a constant level-gyro drift b_g1 at rest (eq. 32):
-    |b_g1| (t - sin(sqrt(k_sh) t) / sqrt(k_sh)). Multiply by R for distance."""
+    """Integrated rate errors (int p_merror, int q_merror) in rad for a constant level-gyro
+    drift b_g1 at rest (eq. 32): (-b_g1 t + b_g1 sin(sqrt(k_sh) t)/sqrt(k_sh), 0);
+    their norm, times R, is the position error."""
     _x0 = np.sqrt(k_sh)
-    out0 = abs(b_g1*t - b_g1*np.sin(_x0*t)/_x0)
-    return out0
+    out0 = -b_g1*t + b_g1*np.sin(_x0*t)/_x0
+    out1 = 0
+    return _broadcast(out0, out1)
 
 
 def error_ch3(t, b_g3, omega_e, lat0, psi0, k_sh, alpha):
@@ -294,6 +336,13 @@ def error_ch3(t, b_g3, omega_e, lat0, psi0, k_sh, alpha):
     out0 = _x0*_x6 + _x13*_x14*_x5*omega_e*(-_x0*_x9 + _x1*(_x10*_x11 + np.sin(_x12)))
     out1 = -_x10*_x6 + _x13*_x14*_x4*b_g3*omega_e*(_x1*(_x0*_x11 - np.cos(_x12)) + _x10*_x9)
     return _broadcast(out0, out1)
+
+
+def oscillation_period(k_sh):
+    """Period of the tilt oscillation of eq. 30, 2 pi / sqrt(k_sh) (the Schuler period for
+    the k_sh of eq. 28)."""
+    out0 = 2*np.pi/np.sqrt(k_sh)
+    return out0
 
 
 def schuler_period(g, R):
@@ -350,3 +399,42 @@ def table2_initial_azimuth(t, phi_z0, v_cross, omega0):
     _x0 = omega0*t
     out0 = phi_z0*v_cross*(_x0 - np.sin(_x0))/omega0
     return out0
+
+
+def strapdown_velocity_rates(f_n, f_e, v_n, v_e, lat, rho, omega_e):
+    """NED velocity equation of the strapdown comparator on the sphere of radius rho (eq. 10
+    with t = Earth, s = NED; known altitude, v_D = 0): f + g - (2 omega_ie + omega_en)
+    x v - omega_ie x (omega_ie x r), north and east rows. f_N, f_E: specific force in
+    NED. Returns (v_N_dot, v_E_dot)."""
+    _x0 = np.sin(lat)
+    _x1 = 2*_x0*omega_e
+    _x2 = np.tan(lat)/rho
+    out0 = -_x0*omega_e**2*rho*np.cos(lat) - _x1*v_e - _x2*v_e**2 + f_n
+    out1 = _x1*v_n + _x2*v_e*v_n + f_e
+    return _broadcast(out0, out1)
+
+
+def course_rate(dlat, dlon, lat, lat_dot):
+    """Rate of the course chi = atan2(dlon cos(lat), dlat) of a path whose latitude and
+    longitude change by dlat, dlon along one progress variable, at latitude rate
+    lat_dot: -dlat dlon sin(lat) lat_dot / (dlat^2 + dlon^2 cos^2(lat))."""
+    out0 = -dlat*dlon*lat_dot*np.sin(lat)/(dlat**2 + dlon**2*np.cos(lat)**2)
+    return out0
+
+
+def velocity_at_rest(omega_e, lat, R):
+    """Inertial velocity of a vehicle at rest in m_N (north, west, up): omega_ie x
+    [0, 0, R] = [0, -omega_e R cos(lat), 0]. Returns (..., 3)."""
+    out0 = 0
+    out1 = -R*omega_e*np.cos(lat)
+    out2 = 0
+    return _shaped((3,), out0, out1, out2)
+
+
+def ground_velocity(v_x, v_y, v_z, r_x, r_y, r_z, w_x, w_y, w_z):
+    """Earth-relative velocity (eq. 8 for the Earth-fixed frame): v_i - omega_ie x r, with
+    v_i, r and the Earth rate w = omega_ie in one set of axes. Returns (..., 3)."""
+    out0 = r_y*w_z - r_z*w_y + v_x
+    out1 = -r_x*w_z + r_z*w_x + v_y
+    out2 = r_x*w_y - r_y*w_x + v_z
+    return _shaped((3,), out0, out1, out2)

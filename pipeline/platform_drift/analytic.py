@@ -3,15 +3,16 @@
 The formulas come from ``pipeline/generated/platform_drift.py`` (derived with SymPy in
 ``derivations/platform_drift``); this module only assembles them:
 
-* channel 1 (eq. 32): ``int p_merror = -b_g1 (t - sin(sqrt(k_sh) t)/sqrt(k_sh))``,
-  ``int q_merror = 0``; the size comes from ``gen.error_ch1``, the sign from eq. 32;
+* channel 1 (eq. 32): ``(int p_merror, int q_merror) = gen.error_ch1(...)``, that is
+  ``(-b_g1 t + b_g1 sin(sqrt(k_sh) t)/sqrt(k_sh), 0)``, signed as derived (and printed);
 * channel 3 (eq. 36): ``(int p_merror, int q_merror) = gen.error_ch3(...)``;
 * both: the two rate-error integrals added as vectors.
 
 The position error is ``R * |(int p_merror, int q_merror)|`` (m). The analysis is for a
 stationary vehicle; moving scenarios use the start latitude (scenario field
 ``analytic.latitude``). ``k_sh`` is the stationary Schuler constant
-``g/R - omega_e^2 cos^2(lat)`` with the mass gravity ``g = GM/R_G^2`` and ``R = R_G``.
+``g/R - omega_e^2 cos^2(lat)`` with the mass gravity ``g = GM/R_G^2`` and ``R = R_G``; its
+period ``2 pi / sqrt(k_sh)`` is ``gen.oscillation_period`` (eq. 30).
 """
 
 from __future__ import annotations
@@ -39,7 +40,8 @@ def constants(sc: Scenario) -> dict[str, float]:
         "g_mass_m_s2": g,
         "R_G_m": rho,
         "k_sh_1_s2": k_sh,
-        "schuler_period_s": float(2 * np.pi / np.sqrt(k_sh)),
+        # eq. 30: the tilt oscillation's period 2 pi / sqrt(k_sh)
+        "schuler_period_s": float(gen.oscillation_period(k_sh)),
         "alpha_rad": alpha,
         "plumb_deflection_rad": deflection,
     }
@@ -53,15 +55,15 @@ def error_m(sc: Scenario, case: str, t: np.ndarray) -> np.ndarray:
     p_int = np.zeros_like(t)
     q_int = np.zeros_like(t)
     if b1 != 0.0:
-        # eq. 32: int p_merror = -b_g1 (t - sin(sqrt(k) t)/sqrt(k)), whose bracket is >= 0;
-        # taken as -sign(b_g1) |error_ch1| so that it does not matter whether the generated
-        # function returns eq. 32's norm or the signed integral
-        mag = np.abs(np.asarray(gen.error_ch1(t, b1, c["k_sh_1_s2"]), dtype=float))
-        p_int = p_int - np.sign(b1) * mag
+        # eq. 32: int p_merror = -b_g1 t + b_g1 sin(sqrt(k) t)/sqrt(k), int q_merror = 0
+        p1, q1 = gen.error_ch1(t, b1, c["k_sh_1_s2"])
+        p_int = p_int + np.asarray(p1, dtype=float)
+        q_int = q_int + np.asarray(q1, dtype=float)
     if b3 != 0.0:
         p3, q3 = gen.error_ch3(
             t, b3, sc.earth.omega_e, sc.route.lat0, sc.psi0, c["k_sh_1_s2"], c["alpha_rad"]
         )
         p_int = p_int + np.asarray(p3, dtype=float)
         q_int = q_int + np.asarray(q3, dtype=float)
+    # eq. 32 (second line): R sqrt((int p_merror)^2 + (int q_merror)^2)
     return sc.earth.radius * np.hypot(p_int, q_int)

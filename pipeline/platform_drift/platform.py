@@ -42,7 +42,7 @@ from scipy.integrate import solve_ivp
 
 from pipeline.generated import frames
 from pipeline.generated import platform_drift as gen
-from pipeline.platform_drift.trajectory import Trajectory, c3
+from pipeline.platform_drift.trajectory import Trajectory, c3, eq2_angles
 
 __all__ = ["InitialState", "initial_state", "simulate", "N_STATE"]
 
@@ -56,6 +56,7 @@ class InitialState:
     c_si: np.ndarray  # 3x3 platform attitude C_s^i
     p: float
     q: float
+    r_0m: float  # r(0-) of the alignment; navigation commands r = 0 (eq. 25)
     omega_x: float
     omega_y: float
     phi_x: float
@@ -66,47 +67,54 @@ class InitialState:
 
 
 def initial_state(traj: Trajectory, level: str) -> InitialState:
-    """Ideal end of alignment at t = 0.
+    """Ideal end of alignment at t = 0 (the vehicle at rest).
 
     ``level = 'mass'``: the platform's axis 3 is along the radius (the mass vertical of the
     paper's spherical gravity), i.e. phi_x = phi_y = 0; ``'plumb'``: axis 3 along the
     apparent vertical (the specific force at t = 0), the state the paper's alignment ends in
     (eqs. 20, 21: phi ~ alpha). Axis 1 is at azimuth psi0 (north toward west).
-    p0, q0 are the platform-axis components of the inertial rate of the local NWU frame
-    (the rates that keep the platform at rest relative to the local vertical);
-    omega_x0, omega_y0 follow from eq. 13 with the true inertial velocity.
+    p0, q0 are p(0-), q(0-) of the generated ``alignment_rates`` (the exact rates that hold
+    the platform still, eq. 19 exact with phi_dot = psi_dot = 0; eq. 24 is its r(0-) to
+    first order), which do not jump at 0+ (Table 1); r(0-) is kept as ``r_0m`` and navigation
+    commands r = 0 (eq. 25). omega_x0, omega_y0 follow from eq. 13 with the true inertial
+    velocity, the eq. 14 tilts from the true position.
     """
     tr = traj.at(0.0)
+    if tr.lat_dot != 0.0 or tr.lon_dot != 0.0:
+        raise ValueError("the alignment (eqs. 20-24) ends with the vehicle at rest at t = 0")
     nwu = tr.nwu_i
     if level == "mass":
         c_si = nwu @ c3(traj.psi0)
     elif level == "plumb":
-        up = tr.f_i / np.linalg.norm(tr.f_i)
+        # the apparent vertical: the generated specific force (eq. 17) in NWU axes
+        f_i = nwu @ traj.specific_force_in(tr, nwu)
+        up = f_i / np.linalg.norm(f_i)
         a1 = nwu @ c3(traj.psi0)[:, 0]
         a1 = a1 - up * (a1 @ up)
         a1 /= np.linalg.norm(a1)
         c_si = np.column_stack((a1, np.cross(up, a1), up))
     else:
         raise ValueError(f"unknown initial level {level!r}")
-    w_i = nwu @ tr.w_nwu
-    p0, q0, _ = c_si.T @ w_i
+    # the angles of eq. 2 of C_s^{mN}
+    psi, tilt_y, tilt_x = eq2_angles(nwu.T @ c_si)
+    # eq. 24 (exact form): p(0-), q(0-), r(0-) that hold the platform still
+    p0, q0, r0m = gen.alignment_rates(traj.earth.omega_e, tr.lat, psi, tilt_x, tilt_y)
     x, y, z = c_si.T @ tr.r_i
     u, v, _ = c_si.T @ tr.v_i
     omega_x, omega_y = gen.radius_rates_from_velocity(u, v, z)  # eq. 13
     phi_x, phi_y = gen.tilts_from_position(x, y, traj.rho)  # eq. 14
-    c_s_mn = nwu.T @ c_si  # C_s^{mN}
-    psi = float(np.arctan2(c_s_mn[1, 0], c_s_mn[0, 0]))
     return InitialState(
         c_si=c_si,
         p=float(p0),
         q=float(q0),
+        r_0m=float(r0m),
         omega_x=float(omega_x),
         omega_y=float(omega_y),
         phi_x=float(phi_x),
         phi_y=float(phi_y),
         lat=tr.lat,
         lon=tr.lon,
-        psi=psi,
+        psi=float(psi),
     )
 
 
@@ -148,9 +156,9 @@ def make_rhs(traj: Trajectory, drift: np.ndarray):
         lat2, psi2 = Y[:, 18], Y[:, 20]
         # accelerometers: true specific force in the physical platform frame
         f = traj.specific_force_in(tr, C)
-        # algorithm: known altitude gives z (eq. 14 for x, y)
+        # algorithm: known altitude gives z = sqrt(rho^2 - x^2 - y^2) (eq. 14 for x, y)
         x, yy = gen.position_from_tilts(fx, fy, rg)
-        z = np.sqrt(rho * rho - x * x - yy * yy)
+        z = gen.known_altitude_z(x, yy, rho)
         p_dot, q_dot = gen.platform_commands_rates(f[:, 0], f[:, 1], z)  # eq. 12
         r = r_cmd
         # eq. 15: the tilt rates do not depend on z_dot; z_dot follows from them
@@ -158,7 +166,8 @@ def make_rhs(traj: Trajectory, drift: np.ndarray):
             wx, wy, fx, fy, p, q, r, p_dot, q_dot, z, 0.0, rg, gm
         )
         x_dot, y_dot = gen.position_from_tilts(fx_dot, fy_dot, rg)  # eq. 14, differentiated
-        z_dot = -(x * x_dot + yy * y_dot) / z
+        # known constant altitude: z_dot = -(x x_dot + y y_dot) / z
+        z_dot = gen.known_altitude_z_dot(x, yy, z, x_dot, y_dot)
         wx_dot, wy_dot, _, _ = gen.oscillation_rates(
             wx, wy, fx, fy, p, q, r, p_dot, q_dot, z, z_dot, rg, gm
         )

@@ -47,6 +47,7 @@ import pandas as pd
 
 from pipeline.atomic import write_csv, write_json
 from pipeline.generated import frames
+from pipeline.generated import platform_drift as gen
 from pipeline.platform_drift import analytic
 from pipeline.platform_drift import platform as pf
 from pipeline.platform_drift import strapdown as sd
@@ -126,9 +127,10 @@ def simulate_errors(
             "strapdown": float(curves["none", "strapdown"].max()),
         }
     ground = [traj.at(float(x)) for x in t[:: max(1, len(t) // 720)]]
-    we = frames.earth_rate_e(sc.earth.omega_e)
+    # eq. 8: the Earth-relative velocity v_i - omega_ie x r
+    w_ie = frames.earth_rate_e(sc.earth.omega_e)
     info["max_ground_speed_m_s"] = float(
-        max(np.linalg.norm(g.v_i - np.cross(we, g.r_i)) for g in ground)
+        max(np.linalg.norm(gen.ground_velocity(*g.v_i, *g.r_i, *w_ie)) for g in ground)
     )
     return _long(t, curves), _long(t, diag), info
 

@@ -11,7 +11,11 @@ integrates, on the same spherical Earth (radius rho = R + h, mass gravity GM/rho
     lat_dot = v_N / rho,   lon_dot = v_E / (rho cos(lat))
 
 with ``omega_ie^n = [w cos(lat), 0, -w sin(lat)]``,
-``omega_en^n = [v_E, -v_N, -v_E tan(lat)] / rho`` and ``r^n = [0, 0, -rho]``.
+``omega_en^n = [v_E, -v_N, -v_E tan(lat)] / rho`` and ``r^n = [0, 0, -rho]``. Every formula
+is generated: the rates from ``pipeline.generated.frames`` (Earth rate, transport rate,
+lat/lon rates, skew), the velocity equation (eq. 10 in NED, derived in
+derivations/platform_drift/strapdown.py) and the initial ground velocity (eq. 8) from
+``pipeline.generated.platform_drift``.
 Vertical channel: the same known-altitude aiding as the platform algorithm, i.e. the
 altitude is the true one and the down velocity is zero (only v_N and v_E are
 integrated), so the unstable vertical channel does not diverge.
@@ -25,6 +29,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from pipeline.generated import frames
+from pipeline.generated import platform_drift as gen
 from pipeline.platform_drift.trajectory import Trajectory
 
 __all__ = ["simulate", "N_STATE", "NWU_TO_NED"]
@@ -43,8 +48,7 @@ def make_rhs(traj: Trajectory, drift_b: np.ndarray):
     drift_b = np.asarray(drift_b, dtype=float)
     n = drift_b.shape[0]
     rho = traj.rho
-    gm, we = traj.earth.gm, traj.earth.omega_e
-    g_mass = gm / rho**2
+    we = traj.earth.omega_e
 
     def rhs(t: float, y: np.ndarray) -> np.ndarray:
         tr = traj.at(t)
@@ -59,16 +63,12 @@ def make_rhs(traj: Trajectory, drift_b: np.ndarray):
         w_meas = w_b[None, :] + drift_b
         c_dot = C @ _skew(w_meas) - _skew(w_in) @ C
         f_n = C @ f_b
-        v = np.column_stack((vn, ve, np.zeros(n)))
-        r_n = np.array([0.0, 0.0, -rho])
-        cor = np.cross(2 * w_ie + w_en, v)
-        cen = np.cross(w_ie, np.cross(w_ie, np.broadcast_to(r_n, (n, 3))))
-        a = f_n - cor - cen
-        a[:, 2] += g_mass
+        # eq. 10 in NED: f + g - (2 omega_ie + omega_en) x v - omega_ie x (omega_ie x r)
+        vn_dot, ve_dot = gen.strapdown_velocity_rates(f_n[:, 0], f_n[:, 1], vn, ve, lat, rho, we)
         out = np.empty_like(Y)
         out[:, :9] = c_dot.reshape(n, 9)
-        out[:, 9] = a[:, 0]
-        out[:, 10] = a[:, 1]
+        out[:, 9] = vn_dot
+        out[:, 10] = ve_dot
         latlon_dot = frames.latlon_rates(vn, ve, lat, rho)
         out[:, 11] = latlon_dot[:, 0]
         out[:, 12] = latlon_dot[:, 1]
@@ -90,10 +90,11 @@ def simulate(
     n = drift_b.shape[0]
     tr = traj.at(float(t_eval[0]))
     c_bn = NWU_TO_NED @ tr.nwu_i.T @ traj.body_i(tr)
+    # eq. 8: the Earth-relative velocity v_i - omega_ie x r, in NED
     v_ned = (
         NWU_TO_NED
         @ tr.nwu_i.T
-        @ (tr.v_i - np.cross(frames.earth_rate_e(traj.earth.omega_e), tr.r_i))
+        @ gen.ground_velocity(*tr.v_i, *tr.r_i, *frames.earth_rate_e(traj.earth.omega_e))
     )
     row = np.concatenate([c_bn.ravel(), v_ned[:2], [tr.lat, tr.lon]])
     sol = solve_ivp(

@@ -28,7 +28,7 @@ Frames (all right-handed):
 Measurements: :meth:`Trajectory.specific_force_in` gives what accelerometers along any
 frame's axes read, from the generated eq. 17 (``gen.specific_force_platform``, exact in the
 tilts). The inertial ``a_i`` and ``f_i`` computed here are an independent check of it (the
-tests compare the two) and give the plumb direction at t = 0.
+tests compare the two); the pipeline reads the specific force only from the generated eq. 17.
 
 Angles: ``psi`` (the paper's azimuth of eq. 2) turns about the up axis from north toward
 west; the course ``chi`` turns from north toward east. Everything is in SI units and rad.
@@ -44,7 +44,7 @@ import numpy as np
 from pipeline.generated import frames
 from pipeline.generated import platform_drift as gen
 
-__all__ = ["Earth", "Path", "Truth", "Trajectory", "c3", "haversine"]
+__all__ = ["Earth", "Path", "Truth", "Trajectory", "c3", "eq2_angles", "haversine"]
 
 
 @dataclass(frozen=True)
@@ -95,6 +95,19 @@ def c3(psi: float) -> np.ndarray:
     The transpose of the generated frame rotation ``frames.rot_z(psi)``.
     """
     return frames.rot_z(psi).T
+
+
+def eq2_angles(c_x_nwu: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(psi, phi_y, phi_x) of ``C_x^{NWU} = C3(psi) C2(phi_y) C1(phi_x)`` (eq. 2), inverted.
+
+    ``c_x_nwu`` is 3x3 or (..., 3, 3); |phi_y| < pi/2. The inverse of the generated
+    ``frames.mat_tn(psi, phi_y, phi_x).T`` (the tests compose the two).
+    """
+    c = np.asarray(c_x_nwu, dtype=float)
+    psi = np.arctan2(c[..., 1, 0], c[..., 0, 0])
+    phi_y = np.arcsin(np.clip(-c[..., 2, 0], -1.0, 1.0))
+    phi_x = np.arctan2(c[..., 2, 1], c[..., 2, 2])
+    return psi, phi_y, phi_x
 
 
 def haversine(lat1, lon1, lat2, lon2) -> np.ndarray:
@@ -190,8 +203,7 @@ class Trajectory:
         w_nwu = frames.transport_rate_n(lat, lat_d, lam_d) * np.array([1.0, -1.0, -1.0])
         # body yaw follows the course: chi_dot = -dlat dlon sin(lat) lat_dot / (dlat^2 + dlon^2 cos^2)
         chi = self.course(lat)
-        den = p.dlat**2 + (p.dlon * cl) ** 2
-        chi_d = -p.dlat * p.dlon * sl * lat_d / den if den > 0 else 0.0
+        chi_d = float(gen.course_rate(p.dlat, p.dlon, lat, lat_d)) if self.moving else 0.0
         return Truth(
             lat=lat,
             lon=lon,
@@ -218,9 +230,7 @@ class Trajectory:
         ``gen.specific_force_platform``. Returns (3,) or (n, 3).
         """
         c = np.einsum("ji,...jk->...ik", tr.nwu_i, c_xi)  # C_x^{NWU}
-        psi = np.arctan2(c[..., 1, 0], c[..., 0, 0])
-        phi_y = np.arcsin(np.clip(-c[..., 2, 0], -1.0, 1.0))
-        phi_x = np.arctan2(c[..., 2, 1], c[..., 2, 2])
+        psi, phi_y, phi_x = eq2_angles(c)
         e = self.earth
         f = gen.specific_force_platform(
             self.rho,

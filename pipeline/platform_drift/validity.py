@@ -96,7 +96,8 @@ def table2_azimuth_error_m(sc: Scenario, t: np.ndarray) -> np.ndarray:
     rho = sc.earth.radius + sc.route.altitude
     g = sc.earth.gm / rho**2
     omega0 = 2.0 * np.pi / float(gen.schuler_period(g, rho))
-    v_east = sc.earth.omega_e * rho * np.cos(sc.route.lat0)
+    # inertial velocity at rest, omega_ie x r in m_N (north, west, up): east = -west
+    v_east = -float(gen.velocity_at_rest(sc.earth.omega_e, sc.route.lat0, rho)[1])
     # Table 2 row 5: (dx, dy) = (eps_z / 2)(v_y, -v_x)[t^2 - 2(1 - cos w0 t)/w0^2] (derived form)
     dx, dy = gen.table2_azimuth_drift(np.asarray(t, dtype=float), sc.b_g3, v_east, 0.0, omega0)
     return np.hypot(np.asarray(dx, dtype=float), np.asarray(dy, dtype=float))

@@ -158,8 +158,11 @@ def test_channel1_closed_form_against_solve_ivp():
     sol = solve_ivp(
         rhs, (0, t[-1]), [phi0, rate0 + B_G1, phi0, rate0, 0.0], t_eval=t, rtol=1e-12, atol=1e-18
     )
-    closed = gen.error_ch1(t, B_G1, k)
-    np.testing.assert_allclose(np.abs(sol.y[4]), closed, rtol=1e-6, atol=1e-6 * closed.max())
+    int_p, int_q = gen.error_ch1(t, B_G1, k)
+    # signed: int p_merror of eq. 32 is -b_g1 t + ..., the integral the ODE accumulates
+    np.testing.assert_allclose(sol.y[4], int_p, rtol=1e-6, atol=1e-6 * np.abs(int_p).max())
+    assert np.all(int_q == 0.0)
+    closed = np.hypot(int_p, int_q)
     # linear growth b_g1 t with a Schuler ripple of amplitude b_g1 / sqrt(k_sh)
     assert np.all(np.abs(closed - B_G1 * t) <= B_G1 / np.sqrt(k) * (1 + 1e-9))
 
@@ -315,6 +318,9 @@ SAMPLE = {
     "R_G": (0.5, 2.0),
     "z": (0.5, 2.0),
     "GM": (0.5, 2.0),
+    # x, y small against R_G, so that the known-altitude z = sqrt(R_G^2 - x^2 - y^2) is real
+    "x": (0.05, 0.3),
+    "y": (0.05, 0.3),
 }
 
 
@@ -329,15 +335,21 @@ def test_generated_equals_lambdified_derivation(fn):
     n = 25
     points = [rng.uniform(*SAMPLE.get(name, (0.1, 1.3)), n) for name in arg_names]
     got = func(*points)
+    if fn.shape is not None:  # one array with trailing axes fn.shape
+        got = list(np.asarray(got).reshape(n, -1).T)
     got = [got] if isinstance(fn.exprs, sp.Basic) else list(got)
     want = [np.broadcast_to(np.asarray(v, dtype=float), (n,)) for v in lam(*points)]
     for g_, w_ in zip(got, want, strict=True):
+        assert np.all(np.isfinite(w_)), f"{fn.name}: sample outside the function's domain"
         np.testing.assert_allclose(g_, w_, rtol=1e-10, atol=1e-13)
 
 
 def test_generated_signatures_are_the_agreed_ones():
     agreed = {
         "error_ch1": ["t", "b_g1", "k_sh"],
+        "oscillation_period": ["k_sh"],
+        "alignment_rates": ["omega_e", "lat", "psi", "phi_x", "phi_y"],
+        "strapdown_velocity_rates": ["f_n", "f_e", "v_n", "v_e", "lat", "rho", "omega_e"],
         "error_ch3": ["t", "b_g3", "omega_e", "lat0", "psi0", "k_sh", "alpha"],
         "k_sh_stationary": ["g", "R", "omega_e", "lat"],
         "alpha_deflection": ["R", "omega_e", "lat", "g"],

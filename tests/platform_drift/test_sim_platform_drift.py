@@ -174,7 +174,7 @@ def test_ch1_ch3_analytic_is_vector_sum(results):
     e13 = analytic.error_m(sc, "ch1_ch3", t)
     assert np.all(e13 <= e1 + e3 + 1e-9)
     assert np.all(e13 >= np.abs(e1 - e3) - 1e-9)
-    # the vector sum with int p_merror = -error_ch1 (eq. 32) follows the tilt-only simulation
+    # the vector sum of the signed integrals of eq. 32 and eq. 36 follows the tilt-only simulation
     _, diag = curve(results["stationary"]["errors_diagnostic"], "ch1_ch3", DIAGNOSTIC_SCHEME)
     assert np.max(np.abs(diag - e13)) < 0.01 * e13.max()
 

@@ -13,8 +13,14 @@
   - a skew matrix: element assignments to ``m[..., i, j]`` and ``m[..., j, i]`` of which
     exactly one is negated, or a 3 x 3 display with zeros on its diagonal;
   - a float literal within 1e-3 of the Earth rate 7.292115e-5 rad/s;
-  - a product of an Earth-rate name (``omega_e``, ``omega_ie``, ``we``, ``om``...) with a
-    cos or sin of an angle (``omega_ie * cos(lat)``).
+  - a product of an Earth-rate name (``omega_e``, ``omega_ie``, ``w_ie``, ``we``, ``om``...)
+    with a cos or sin of an angle (``omega_ie * cos(lat)``);
+  - a cross product with an Earth rate (an Earth-rate name, or a call of
+    ``frames.earth_rate_*``, among its arguments): a Coriolis, centripetal or
+    transport-theorem term typed by hand (``np.cross(2 * w_ie + w_en, v)``,
+    ``v_i - np.cross(earth_rate_e(w), r)``);
+  - a period from a square root, ``2 pi / sqrt(k)`` (the Schuler period of a generated
+    ``oscillation_period`` / ``schuler_period`` typed again).
   Its false positives are declared in :data:`ALLOWED` with the reason.
 
 The heuristic itself is tested on code that re-types those formulas (it must flag them) and
@@ -51,7 +57,7 @@ ALLOWED: dict[tuple[str, str, str], str] = {
 }
 
 _TRIG = {"cos", "sin"}
-_EARTH_RATE = re.compile(r"^(omega_?i?e|we|om|omega_earth|earth_rate)$", re.IGNORECASE)
+_EARTH_RATE = re.compile(r"^(omega_?i?e|w_?ie|we|om|omega_earth|earth_rate)$", re.IGNORECASE)
 _ARRAY_CALLS = {"array", "stack", "column_stack", "vstack", "hstack", "asarray"}
 
 
@@ -101,6 +107,25 @@ class _Scope:
             elif isinstance(sub, ast.Name) and sub.id in self.bound:
                 uses.add(self.bound[sub.id])
         return uses
+
+
+def _factors(node: ast.AST) -> list[ast.AST]:
+    """The factors of a product (or quotient) chain: ``a * b / c * -d`` -> [a, b, c, d]."""
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult | ast.Div):
+        return _factors(node.left) + _factors(node.right)
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        return _factors(node.operand)
+    return [node]
+
+
+def _has_earth_rate(node: ast.AST) -> bool:
+    """Whether ``node`` mentions an Earth-rate name or calls an ``earth_rate_*`` function."""
+    for sub in ast.walk(node):
+        if isinstance(sub, ast.Name | ast.Attribute) and _EARTH_RATE.match(_name(sub)):
+            return True
+        if isinstance(sub, ast.Call) and _name(sub.func).startswith("earth_rate"):
+            return True
+    return False
 
 
 def _cos_and_sin_of_one_angle(uses: set[tuple[str, str]]) -> bool:
@@ -196,9 +221,21 @@ def findings(source: str) -> set[tuple[str, str, int]]:
                 if abs(node.value - 7.292115e-5) <= 1e-3 * 7.292115e-5:
                     found.add((fname, "earth_rate_literal", node.lineno))
             if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult):
-                for a, b in ((node.left, node.right), (node.right, node.left)):
-                    if _EARTH_RATE.match(_name(a)) and scope.trig_uses(b):
-                        found.add((fname, "earth_rate_product", node.lineno))
+                # the factors of the whole product chain (omega_e * rho * cos(lat) too)
+                factors = _factors(node)
+                rates = [f for f in factors if _EARTH_RATE.match(_name(f))]
+                others = [f for f in factors if not _EARTH_RATE.match(_name(f))]
+                if rates and any(scope.trig_uses(f) for f in others):
+                    found.add((fname, "earth_rate_product", node.lineno))
+            # a Schuler-type period 2 pi / sqrt(k)
+            if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Div):
+                has_pi = any(_name(sub) == "pi" for sub in ast.walk(node.left))
+                if has_pi and isinstance(node.right, ast.Call) and _name(node.right.func) == "sqrt":
+                    found.add((fname, "period_from_sqrt", node.lineno))
+            # Coriolis / centripetal / transport-theorem terms: a cross product with Earth rate
+            if isinstance(node, ast.Call) and _name(node.func) == "cross":
+                if any(_has_earth_rate(a) for a in node.args):
+                    found.add((fname, "earth_rate_cross", node.lineno))
         for _array, elts in elements.items():
             line = min(e[3] for e in elts)
             uses = set().union(*(scope.trig_uses(v) for _, _, v, _ in elts))
@@ -256,8 +293,28 @@ def rhs(lat, we):
 def w_ie(site):
     return site.omega_ie * np.cos(site.lat)
 """,
+    "earth_rate_chain": """
+def v_east(sc, rho):
+    return sc.earth.omega_e * rho * np.cos(sc.route.lat0)
+""",
     "earth_rate_literal": """
 OMEGA = 7.2921151467e-5
+""",
+    "coriolis_cross": """
+def rhs(w_ie, w_en, v):
+    return np.cross(2 * w_ie + w_en, v)
+""",
+    "centripetal_cross": """
+def rhs(w_ie, r):
+    return np.cross(w_ie, np.cross(w_ie, r))
+""",
+    "schuler_period": """
+def constants(k_sh):
+    return {"schuler_period_s": float(2 * np.pi / np.sqrt(k_sh))}
+""",
+    "ground_velocity_cross": """
+def ground(traj, tr):
+    return tr.v_i - np.cross(frames.earth_rate_e(traj.earth.omega_e), tr.r_i)
 """,
 }
 
@@ -267,6 +324,8 @@ def rhs(traj, lat, vn, ve, rho, w):
     c_dot = C @ frames.skew(w[:, 0], w[:, 1], w[:, 2])
     s = vc * (tau - math.sin(two_pi * tau) / two_pi)
     h = np.sin((lat2 - lat1) / 2) ** 2 + np.cos(lat1) * np.cos(lat2) * np.sin(dlon / 2) ** 2
+    c_si = np.column_stack((a1, np.cross(up, a1), up))
+    v_g = gen.ground_velocity(*tr.v_i, *tr.r_i, *frames.earth_rate_e(traj.earth.omega_e))
     return np.stack([np.cos(a), np.cos(b)], -1), [0.0, 0.0, g]
 """
 
