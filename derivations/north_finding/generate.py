@@ -184,9 +184,16 @@ def functions() -> list[GeneratedFunction]:
         GeneratedFunction(
             "a3_eq47_residual",
             (c_, s_, A_, B_, C_, D_, E_),
-            A_ * c_**2 + B_ * c_ + C_ * c_ * s_ + D_ * s_ + E_,
+            a3["residual47"],
             "Azimuth method 3, eq. 47 before squaring: its residual, which rejects the roots\n"
             "    that squaring (eq. 49) introduces.",
+        ),
+        GeneratedFunction(
+            "a3_eq47_residual_dpsi",
+            (c_, s_, A_, B_, C_, D_, E_),
+            a3["residual47_dpsi"],
+            "Azimuth method 3, eq. 47: d/dpsi of its residual (sympy diff with c = cos psi,\n"
+            "    s = sin psi), the derivative of the Newton polish.",
         ),
         GeneratedFunction(
             "a4_bias", (s.wx_0, s.wx_180), a4["bias"], "Azimuth method 4, eq. 55: gyro bias."

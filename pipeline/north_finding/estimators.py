@@ -138,8 +138,7 @@ def solve_quartic_psi(coeffs47: tuple[np.ndarray, ...], prior: np.ndarray) -> np
     for _ in range(2):
         cp, sp_ = np.cos(psi), np.sin(psi)
         r = gen.a3_eq47_residual(cp, sp_, *coef)
-        # d/dpsi of A c^2 + B c + C c s + D s + E
-        dr = -2 * coef[0] * cp * sp_ - coef[1] * sp_ + coef[2] * (cp**2 - sp_**2) + coef[3] * cp
+        dr = gen.a3_eq47_residual_dpsi(cp, sp_, *coef)  # d/dpsi of eq. 47's residual
         step = np.where(np.abs(dr) > 1e-12, r / np.where(dr == 0, 1.0, dr), 0.0)
         psi = psi - np.clip(step, -0.1, 0.1)
     return select_nearest(psi, prior, real)
