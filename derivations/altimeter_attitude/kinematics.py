@@ -45,6 +45,7 @@ __all__ = [
     "third_row_quaternion",
     "euler_from_third_row",
     "third_row_rates",
+    "normalisation_error",
     "normalised_third_row_rates",
     "norm_dynamics",
     "angular_velocity_addition",
@@ -180,10 +181,27 @@ def third_row_rates(c: sp.Matrix = s.c, omega: sp.Matrix = s.omega) -> sp.Matrix
     return skew(omega).T * c
 
 
+def normalisation_error(c: sp.Matrix = s.c, summed: bool = False) -> sp.Expr:
+    """eq. 15: gamma = 1 - c^T c.
+
+    ``summed=True`` keeps the summation order numpy's ``einsum('...i,...i')`` uses for a
+    3-vector on x86-64 (two SIMD lanes: (c1^2 + c3^2) + c2^2), as unevaluated groups, so
+    the generated function rounds like the einsum the filters used before it existed (near
+    c^T c = 1 the order decides the last bits of gamma). Equal to the plain form:
+
+    >>> sp.expand(normalisation_error(summed=True).doit() - normalisation_error())
+    0
+    """
+    if not summed:
+        return 1 - (c.T * c)[0]
+    group = sp.UnevaluatedExpr
+    # eq. 15 in the order (c1^2 + c3^2) + c2^2
+    return 1 - group(group(c[0] ** 2 + c[2] ** 2) + c[1] ** 2)
+
+
 def normalised_third_row_rates(c: sp.Matrix = s.c, omega: sp.Matrix = s.omega) -> sp.Matrix:
-    """eq. 14: c_dot = k gamma c - Omega c, gamma = 1 - c^T c (eq. 15)."""
-    gamma = 1 - (c.T * c)[0]
-    return s.k * gamma * c + third_row_rates(c, omega)
+    """eq. 14: c_dot = k gamma c - Omega c, gamma from eq. 15."""
+    return s.k * normalisation_error(c) * c + third_row_rates(c, omega)
 
 
 def norm_dynamics() -> sp.Expr:

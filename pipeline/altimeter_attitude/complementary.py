@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from pipeline.altimeter_attitude import model
 from pipeline.altimeter_attitude.estimates import Estimates
 from pipeline.altimeter_attitude.sensors import Inputs
 from pipeline.generated import altimeter_attitude as gen
@@ -44,7 +45,7 @@ def _to_estimates(name: str, cs: np.ndarray) -> Estimates:
         roll_sigma=nan,
         pitch_sigma=nan,
         c=cs,
-        norm_error=1.0 - np.einsum("nti,nti->nt", cs, cs),
+        norm_error=model.normalisation_error(cs),
     )
 
 
