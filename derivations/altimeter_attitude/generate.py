@@ -65,6 +65,7 @@ def functions() -> list[GeneratedFunction]:
     euler_c = kin.euler_from_third_row()
     inputs = (*s.omega_t, *s.f_t)
     lvec = model.input_vectors()
+    fpd = kin.flight_path_direction()
     pg = mn.paper_gamma_term()
     pcc = pg["P"][:3, :3]
     pcc_args = [pcc[i, j] for i in range(3) for j in range(i, 3)]
@@ -192,6 +193,19 @@ def functions() -> list[GeneratedFunction]:
             _flat(lev.leveling_angles().subs(dict(zip(s.f_b, s.f_t, strict=True)))),
             "Eq. 11 as derived from eq. 10: phi = atan2(-f_y, -f_z), theta = asin(f_x / g)\n"
             "    (the printed atan2(f_y, f_z) is off by 180 deg).",
+        ),
+        _fn(
+            "flight_path_direction",
+            (kin.flight_path, kin.heading),
+            _flat(sp.Matrix.vstack(*fpd.values())),
+            "Truth trajectory: u = v^n / V = [cos gam cos chi, cos gam sin chi, -sin gam] (the x\n"
+            "    axis after yaw chi and pitch gam), then du/dgam, then du/dchi (9 values).",
+        ),
+        _fn(
+            "climb_rate",
+            (kin.speed, kin.flight_path),
+            kin.climb_rate(),
+            "Truth trajectory, eq. 25: h_dot = -V_d = V sin gam.",
         ),
         _fn(
             "pi_gains",

@@ -48,10 +48,14 @@ __all__ = [
     "normalisation_error",
     "normalised_third_row_rates",
     "norm_dynamics",
+    "flight_path_direction",
+    "climb_rate",
     "angular_velocity_addition",
 ]
 
 phi_dot, theta_dot, psi_dot = sp.symbols("phi_dot theta_dot psi_dot", real=True)
+#: speed V, flight-path angle gam (climbing positive) and heading chi of the truth profile
+speed, flight_path, heading = sp.symbols("V gam chi", real=True)
 
 
 def mat_nb(phi: sp.Expr = s.phi, theta: sp.Expr = s.theta, psi: sp.Expr = s.psi) -> sp.Matrix:
@@ -214,6 +218,27 @@ def norm_dynamics() -> sp.Expr:
     cdot = normalised_third_row_rates()
     ndot = sp.expand(2 * (s.c.T * cdot)[0])
     return sp.factor(ndot.subs(s.c1**2, n - s.c2**2 - s.c3**2))
+
+
+def flight_path_direction() -> dict[str, sp.Matrix]:
+    """Direction of v^n for flight-path angle gam and heading chi, and its partials.
+
+    The velocity points along the x axis of the frame reached from NED by yaw chi, then
+    pitch gam (the 3-2-1 sequence with no roll): u = C(chi, gam, 0) e_x = [cos gam cos chi,
+    cos gam sin chi, -sin gam]; v^n = V u, so a^n = V_dot u + V (du/dgam gam_dot + du/dchi
+    chi_dot). The truth trajectory of the simulation (our model, not an equation of the
+    paper).
+
+    >>> flight_path_direction()["u"].T
+    Matrix([[cos(chi)*cos(gam), sin(chi)*cos(gam), -sin(gam)]])
+    """
+    u = mat_nb(0, flight_path, heading)[:, 0]
+    return {"u": u, "du_dgam": u.diff(flight_path), "du_dchi": u.diff(heading)}
+
+
+def climb_rate() -> sp.Expr:
+    """h_dot = -V_d (eq. 25) with V_d = V u_3 of :func:`flight_path_direction`: V sin gam."""
+    return -speed * flight_path_direction()["u"][2]
 
 
 def angular_velocity_addition() -> tuple[sp.Matrix, sp.Matrix]:

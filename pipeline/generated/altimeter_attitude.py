@@ -24,7 +24,7 @@ def _broadcast(*outs):
         for a in arrays
     )
 
-__all__ = ['model_matrix_a', 'noise_matrix_c', 'input_matrix_b', 'input_vector_exact', 'input_vector_first_order', 'vertical_transition', 'gamma_term_closed', 'noise_gamma', 'normalisation_error', 'third_row_from_euler', 'euler_from_third_row', 'euler_jacobian_third_row', 'euler_model_rhs', 'euler_noise_jacobian', 'euler_process_noise', 'euler_state_jacobian', 'accel_third_row', 'leveling_angles', 'pi_gains']
+__all__ = ['model_matrix_a', 'noise_matrix_c', 'input_matrix_b', 'input_vector_exact', 'input_vector_first_order', 'vertical_transition', 'gamma_term_closed', 'noise_gamma', 'normalisation_error', 'third_row_from_euler', 'euler_from_third_row', 'euler_jacobian_third_row', 'euler_model_rhs', 'euler_noise_jacobian', 'euler_process_noise', 'euler_state_jacobian', 'accel_third_row', 'leveling_angles', 'flight_path_direction', 'climb_rate', 'pi_gains']
 
 #: Functions the pipeline does not call, each with the reason it is generated.
 AUDIT_ONLY = {
@@ -479,6 +479,33 @@ def leveling_angles(ft_x, ft_y, ft_z, g):
     out0 = np.arctan2(-ft_y, -ft_z)
     out1 = np.arcsin(ft_x/g)
     return _broadcast(out0, out1)
+
+
+def flight_path_direction(gam, chi):
+    """Truth trajectory: u = v^n / V = [cos gam cos chi, cos gam sin chi, -sin gam] (the x
+    axis after yaw chi and pitch gam), then du/dgam, then du/dchi (9 values)."""
+    _x0 = np.cos(chi)
+    _x1 = np.cos(gam)
+    _x2 = _x0*_x1
+    _x3 = np.sin(chi)
+    _x4 = _x1*_x3
+    _x5 = np.sin(gam)
+    out0 = _x2
+    out1 = _x4
+    out2 = -_x5
+    out3 = -_x0*_x5
+    out4 = -_x3*_x5
+    out5 = -_x1
+    out6 = -_x4
+    out7 = _x2
+    out8 = 0
+    return _broadcast(out0, out1, out2, out3, out4, out5, out6, out7, out8)
+
+
+def climb_rate(V, gam):
+    """Truth trajectory, eq. 25: h_dot = -V_d = V sin gam."""
+    out0 = V*np.sin(gam)
+    return out0
 
 
 def pi_gains(omega_c, xi):

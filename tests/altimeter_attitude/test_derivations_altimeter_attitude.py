@@ -16,6 +16,8 @@
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -234,10 +236,15 @@ def test_series_discretisation_agrees_with_the_matrix_exponential():
 # ------------------------------------------- the generated forms the filter calls (issue 12)
 
 
-def _generated(name: str):
+@functools.lru_cache(maxsize=1)
+def _generated_functions():
     from derivations.altimeter_attitude import generate
 
-    return next(f for f in generate.functions() if f.name == name)
+    return {f.name: f for f in generate.functions()}
+
+
+def _generated(name: str):
+    return _generated_functions()[name]
 
 
 def test_generated_gamma_term_closed_is_the_kronecker_form_symbolically():

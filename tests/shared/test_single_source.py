@@ -43,11 +43,6 @@ ALLOWED: dict[tuple[str, str, str], str] = {
     ("pipeline/north_finding/cli.py", "main", "earth_rate_literal"): (
         "the default of the --omega-ie command-line parameter: a value, not a formula"
     ),
-    ("pipeline/altimeter_attitude/trajectory.py", "truth", "cos_sin_array"): (
-        "velocity direction V [cos gam cos chi, cos gam sin chi, -sin gam] of the truth "
-        "profile and its partial derivatives in gam and chi (flight-path kinematics, not a "
-        "rotation matrix; not yet generated)"
-    ),
 }
 
 _TRIG = {"cos", "sin"}
