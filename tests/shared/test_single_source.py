@@ -14,7 +14,9 @@
     exactly one is negated, or a 3 x 3 display with zeros on its diagonal;
   - a float literal within 1e-3 of the Earth rate 7.292115e-5 rad/s;
   - a product of an Earth-rate name (``omega_e``, ``omega_ie``, ``we``, ``om``...) with a
-    cos or sin of an angle (``omega_ie * cos(lat)``).
+    cos or sin of an angle (``omega_ie * cos(lat)``);
+  - Rodrigues' rotation formula: one sum that uses sin(a) and 1 - cos(a) of one angle
+    (``v cos a + (k x v) sin a + k (k . v)(1 - cos a)``).
   Its false positives are declared in :data:`ALLOWED` with the reason.
 
 The heuristic itself is tested on code that re-types those formulas (it must flag them) and
@@ -42,6 +44,11 @@ PAPER_DIRS = sorted(p.parent for p in (ROOT / "pipeline").glob("*/paper.py"))
 ALLOWED: dict[tuple[str, str, str], str] = {
     ("pipeline/north_finding/cli.py", "main", "earth_rate_literal"): (
         "the default of the --omega-ie command-line parameter: a value, not a formula"
+    ),
+    ("pipeline/altimeter_attitude/complementary.py", "rotate_third_row", "rodrigues"): (
+        "Rodrigues' rotation of c by -omega dt, the exact solution of eq. 13 for a held rate, "
+        "used by the complementary filter: a re-typed rotation, NOT YET GENERATED (issue 12; "
+        "generating it moves the rounding noise the complementary filter's 1 - c^T c reports)"
     ),
 }
 
@@ -186,6 +193,21 @@ def findings(source: str) -> set[tuple[str, str, int]]:
                         idx = _element_index(t)
                         if idx:
                             elements[idx[0]].append((idx[1], idx[2], v, node.lineno))
+            # Rodrigues' rotation: one sum with cos(a), sin(a) and 1 - cos(a) of one angle
+            if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add | ast.Sub):
+                uses = scope.trig_uses(node)
+                one_minus_cos = {
+                    a
+                    for sub in _walk_scope(node)
+                    if isinstance(sub, ast.BinOp)
+                    and isinstance(sub.op, ast.Sub)
+                    and isinstance(sub.left, ast.Constant)
+                    and sub.left.value == 1
+                    for f, a in scope.trig_uses(sub.right)
+                    if f == "cos"
+                }
+                if one_minus_cos & {a for f, a in uses if f == "sin"}:
+                    found.add((fname, "rodrigues", node.lineno))
             # Earth rate: a float literal, or an Earth-rate name times cos/sin
             if isinstance(node, ast.Constant) and isinstance(node.value, float):
                 if abs(node.value - 7.292115e-5) <= 1e-3 * 7.292115e-5:
@@ -253,6 +275,15 @@ def w_ie(site):
 """,
     "earth_rate_literal": """
 OMEGA = 7.2921151467e-5
+""",
+    "rodrigues": """
+def rotate(v, k, angle):
+    cos, sin = np.cos(angle), np.sin(angle)
+    return v * cos + np.cross(k, v) * sin + k * (k @ v) * (1 - cos)
+""",
+    "rodrigues_inline": """
+def rotate(v, k, a):
+    return v * np.cos(a) + np.cross(k, v) * np.sin(a) + k * (k @ v) * (1.0 - np.cos(a))
 """,
 }
 
