@@ -97,6 +97,13 @@ def functions() -> list[GeneratedFunction]:
             "    Y = a_x / g.",
         ),
         GeneratedFunction(
+            "ls_sin_phi",
+            (s.c_theta_s_phi, s.theta),
+            l2["sin_phi"],
+            "Levelling methods 2 and 4, eqs. 20-21 and 25-26: sin(phi) from the least-squares\n"
+            "    unknown cos(theta) sin(phi) at the estimated theta.",
+        ),
+        GeneratedFunction(
             "l3_sin_theta",
             (s.ay_90, s.ay_270, s.g),
             l3["sin_theta"],

@@ -521,3 +521,12 @@ def test_newton_derivative_of_eq47_is_the_derivative_of_its_residual():
     numeric = (res[0] - res[1]) / (2 * h)
     got = gen.a3_eq47_residual_dpsi(np.cos(psi), np.sin(psi), *coef)
     np.testing.assert_allclose(got, numeric, rtol=0, atol=1e-7 * np.abs(coef).sum(axis=0).max())
+
+
+def test_least_squares_levelling_recovers_sin_phi_from_its_unknown():
+    """L2/L4 solve for X2 = cos(theta) sin(phi); the generated ls_sin_phi inverts it (a wrong
+    trig factor, e.g. sin(theta), fails at 1e-12)."""
+    rng = np.random.default_rng(21)
+    theta, phi = rng.uniform(-1.4, 1.4, 500), rng.uniform(-1.5, 1.5, 500)
+    got = gen.ls_sin_phi(np.cos(theta) * np.sin(phi), theta)
+    np.testing.assert_allclose(got, np.sin(phi), rtol=0, atol=1e-12)
