@@ -66,6 +66,8 @@ def functions() -> list[GeneratedFunction]:
     inputs = (*s.omega_t, *s.f_t)
     lvec = model.input_vectors()
     fpd = kin.flight_path_direction()
+    rot = kin.third_row_rotation(grouped=True)
+    assert rot["check"], "Rodrigues' formula does not solve eq. 13"
     pg = mn.paper_gamma_term()
     pcc = pg["P"][:3, :3]
     pcc_args = [pcc[i, j] for i in range(3) for j in range(i, 3)]
@@ -193,6 +195,15 @@ def functions() -> list[GeneratedFunction]:
             _flat(lev.leveling_angles().subs(dict(zip(s.f_b, s.f_t, strict=True)))),
             "Eq. 11 as derived from eq. 10: phi = atan2(-f_y, -f_z), theta = asin(f_x / g)\n"
             "    (the printed atan2(f_y, f_z) is off by 180 deg).",
+        ),
+        GeneratedFunction(
+            "third_row_rotation",
+            rot["args"],
+            tuple(rot["c_next"]),
+            "Eq. 13 over one step with omega held: c rotated by a about the unit axis k\n"
+            "    (a k = -omega dt), c cos a + (k x c) sin a + k (k . c)(1 - cos a) (Rodrigues),\n"
+            "    summed in the order of numpy's np.cross and np.sum.",
+            {**NAMES, **{sym: f"c{i + 1}" for i, sym in enumerate(rot["args"][3:6])}},
         ),
         _fn(
             "flight_path_direction",

@@ -24,7 +24,7 @@ def _broadcast(*outs):
         for a in arrays
     )
 
-__all__ = ['model_matrix_a', 'noise_matrix_c', 'input_matrix_b', 'input_vector_exact', 'input_vector_first_order', 'vertical_transition', 'gamma_term_closed', 'noise_gamma', 'normalisation_error', 'third_row_from_euler', 'euler_from_third_row', 'euler_jacobian_third_row', 'euler_model_rhs', 'euler_noise_jacobian', 'euler_process_noise', 'euler_state_jacobian', 'accel_third_row', 'leveling_angles', 'flight_path_direction', 'climb_rate', 'pi_gains']
+__all__ = ['model_matrix_a', 'noise_matrix_c', 'input_matrix_b', 'input_vector_exact', 'input_vector_first_order', 'vertical_transition', 'gamma_term_closed', 'noise_gamma', 'normalisation_error', 'third_row_from_euler', 'euler_from_third_row', 'euler_jacobian_third_row', 'euler_model_rhs', 'euler_noise_jacobian', 'euler_process_noise', 'euler_state_jacobian', 'accel_third_row', 'leveling_angles', 'third_row_rotation', 'flight_path_direction', 'climb_rate', 'pi_gains']
 
 #: Functions the pipeline does not call, each with the reason it is generated.
 AUDIT_ONLY = {
@@ -479,6 +479,18 @@ def leveling_angles(ft_x, ft_y, ft_z, g):
     out0 = np.arctan2(-ft_y, -ft_z)
     out1 = np.arcsin(ft_x/g)
     return _broadcast(out0, out1)
+
+
+def third_row_rotation(k1, k2, k3, c1, c2, c3, cos_a, sin_a):
+    """Eq. 13 over one step with omega held: c rotated by a about the unit axis k
+    (a k = -omega dt), c cos a + (k x c) sin a + k (k . c)(1 - cos a) (Rodrigues),
+    summed in the order of numpy's np.cross and np.sum."""
+    _x0 = c3*k3 + (c1*k1 + c2*k2)
+    _x1 = 1 - cos_a
+    out0 = _x1*(_x0*k1) + (c1*cos_a + sin_a*(-c2*k3 + c3*k2))
+    out1 = _x1*(_x0*k2) + (c2*cos_a + sin_a*(c1*k3 - c3*k1))
+    out2 = _x1*(_x0*k3) + (c3*cos_a + sin_a*(-c1*k2 + c2*k1))
+    return _broadcast(out0, out1, out2)
 
 
 def flight_path_direction(gam, chi):

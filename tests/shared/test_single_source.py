@@ -45,11 +45,6 @@ ALLOWED: dict[tuple[str, str, str], str] = {
     ("pipeline/north_finding/cli.py", "main", "earth_rate_literal"): (
         "the default of the --omega-ie command-line parameter: a value, not a formula"
     ),
-    ("pipeline/altimeter_attitude/complementary.py", "rotate_third_row", "rodrigues"): (
-        "Rodrigues' rotation of c by -omega dt, the exact solution of eq. 13 for a held rate, "
-        "used by the complementary filter: a re-typed rotation, NOT YET GENERATED (issue 12; "
-        "generating it moves the rounding noise the complementary filter's 1 - c^T c reports)"
-    ),
 }
 
 _TRIG = {"cos", "sin"}
