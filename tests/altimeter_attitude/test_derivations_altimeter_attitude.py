@@ -301,3 +301,16 @@ def test_generated_input_vectors_and_vertical_block_are_the_zoh_of_eq26():
         np.reshape(gen.vertical_transition(dt), (2, 2)), big[3:5, 3:5], rtol=0, atol=1e-16
     )
     np.testing.assert_array_equal(gen.input_matrix_b(), aug[:5, 5])
+
+
+def test_rodrigues_step_is_derived_and_grouping_keeps_the_value():
+    """kinematics.third_row_rotation: R(a) = I + sin a [k x] + (1 - cos a)[k x]^2 solves
+    dR/da = [k x] R on |k| = 1, and R c is the (grouped) Rodrigues vector; the check is
+    not vacuous: off the unit sphere the same ODE residual is not 0."""
+    r = kin.third_row_rotation(grouped=True)
+    assert r["check"] is True
+    k = sp.Matrix(r["args"][:3])
+    a = sp.Symbol("a", real=True)
+    kx = sp.Matrix([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    rot = sp.eye(3) + sp.sin(a) * kx + (1 - sp.cos(a)) * kx * kx
+    assert (rot.diff(a) - kx * rot).applyfunc(sp.expand) != sp.zeros(3, 3)
