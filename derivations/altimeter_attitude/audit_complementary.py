@@ -31,7 +31,7 @@ def _eqs_13_to_23() -> list[Check]:
             if_match="eq. 7 in vector form: c_dot = Omega^T c = -omega x c",
         )
     ]
-    gamma_c = 1 - (s.c.T * s.c)[0, 0]
+    gamma_c = kin.normalisation_error()  # eq. 15
     out.append(
         Check(
             "14",

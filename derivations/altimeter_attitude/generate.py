@@ -17,6 +17,7 @@ from derivations.altimeter_attitude import complementary as cf
 from derivations.altimeter_attitude import kinematics as kin
 from derivations.altimeter_attitude import leveling as lev
 from derivations.altimeter_attitude import model
+from derivations.altimeter_attitude import multiplicative_noise as mn
 from derivations.altimeter_attitude import symbols as s
 from derivations.codegen import GeneratedFunction, generate_main, render_module
 
@@ -35,10 +36,6 @@ broadcasts its arguments; matrices are returned flattened row by row."""
 
 #: Generated functions the pipeline does not call, with the reason (DESIGN.md invariant 1).
 AUDIT_ONLY = {
-    "normalisation_error": (
-        "eq. 15; NOT YET CALLED (issue 12 open): linear_kf.py and complementary.py evaluate "
-        "1 - c.c with einsum, whose rounding near c.c = 1 differs"
-    ),
     "euler_noise_jacobian": (
         "d(UKF model)/d[n_w, n_a]; the filters take it through euler_process_noise "
         "(dt^2 J Sigma J^T), generated from the same derivation"
@@ -67,6 +64,13 @@ def functions() -> list[GeneratedFunction]:
     c_euler = kin.third_row_euler()
     euler_c = kin.euler_from_third_row()
     inputs = (*s.omega_t, *s.f_t)
+    lvec = model.input_vectors()
+    fpd = kin.flight_path_direction()
+    rot = kin.third_row_rotation(grouped=True)
+    assert rot["check"], "Rodrigues' formula does not solve eq. 13"
+    pg = mn.paper_gamma_term()
+    pcc = pg["P"][:3, :3]
+    pcc_args = [pcc[i, j] for i in range(3) for j in range(i, 3)]
     return [
         _fn(
             "model_matrix_a",
@@ -84,6 +88,41 @@ def functions() -> list[GeneratedFunction]:
             "    matrix; the sign of w is immaterial for the covariances).",
         ),
         _fn(
+            "input_matrix_b",
+            (),
+            _flat(lvec["B"]),
+            "Eq. 26: the input vector B of x_dot = A x + B g + C(x) w (gravity drives V_d).",
+        ),
+        _fn(
+            "input_vector_exact",
+            (s.dt,),
+            _flat(lvec["exact"]),
+            "Eq. 30: L = int_0^dt exp(A s) ds B of the exact zero-order hold (the series stops:\n"
+            "    A^2 B = 0), independent of the IMU outputs and gamma.",
+        ),
+        _fn(
+            "input_vector_first_order",
+            (s.dt,),
+            _flat(lvec["first_order"]),
+            "Eq. 30 as the paper discretises: L = dt B (first order in dt).",
+        ),
+        _fn(
+            "vertical_transition",
+            (s.dt,),
+            _flat(model.block_structure()["vertical_transition"]),
+            "Eq. 30: exp(V dt) (2 x 2, row by row) of the constant (V_d, h) block V of eq. 26's A,\n"
+            "    the lower-right block of F = exp(A dt) (A is block lower triangular).",
+        ),
+        _fn(
+            "gamma_term_closed",
+            (*pcc_args, *pg["variances"], s.dt),
+            (*_flat(pg["closed"][:3, :3]), pg["closed"][3, 3]),
+            "Eq. 31's Gamma (Q kron P) Gamma^T for G = dt C(x) of eq. 26 and Q = diag(sigma_g2 I3,\n"
+            "    sigma_a2 I3), in closed form from the c block P_cc of P (upper triangle P_11 ..\n"
+            "    P_33): its c block (3 x 3, row by row), then its (V_d, V_d) entry; every other\n"
+            "    entry is 0. Equal to the literal Kronecker form of eqs. 32-33 (a test).",
+        ),
+        _fn(
             "noise_gamma",
             (),
             _flat(gamma),
@@ -92,8 +131,9 @@ def functions() -> list[GeneratedFunction]:
         _fn(
             "normalisation_error",
             tuple(s.c),
-            1 - (s.c.T * s.c)[0],
-            "Eq. 15: gamma = 1 - c^T c.",
+            kin.normalisation_error(summed=True),
+            "Eq. 15: gamma = 1 - c^T c, summed as (c1^2 + c3^2) + c2^2 (the rounding of\n"
+            "    numpy's einsum over a 3-vector).",
         ),
         _fn(
             "third_row_from_euler",
@@ -155,6 +195,28 @@ def functions() -> list[GeneratedFunction]:
             _flat(lev.leveling_angles().subs(dict(zip(s.f_b, s.f_t, strict=True)))),
             "Eq. 11 as derived from eq. 10: phi = atan2(-f_y, -f_z), theta = asin(f_x / g)\n"
             "    (the printed atan2(f_y, f_z) is off by 180 deg).",
+        ),
+        GeneratedFunction(
+            "third_row_rotation",
+            rot["args"],
+            tuple(rot["c_next"]),
+            "Eq. 13 over one step with omega held: c rotated by a about the unit axis k\n"
+            "    (a k = -omega dt), c cos a + (k x c) sin a + k (k . c)(1 - cos a) (Rodrigues),\n"
+            "    summed in the order of numpy's np.cross and np.sum.",
+            {**NAMES, **{sym: f"c{i + 1}" for i, sym in enumerate(rot["args"][3:6])}},
+        ),
+        _fn(
+            "flight_path_direction",
+            (kin.flight_path, kin.heading),
+            _flat(sp.Matrix.vstack(*fpd.values())),
+            "Truth trajectory: u = v^n / V = [cos gam cos chi, cos gam sin chi, -sin gam] (the x\n"
+            "    axis after yaw chi and pitch gam), then du/dgam, then du/dchi (9 values).",
+        ),
+        _fn(
+            "climb_rate",
+            (kin.speed, kin.flight_path),
+            kin.climb_rate(),
+            "Truth trajectory, eq. 25: h_dot = -V_d = V sin gam.",
         ),
         _fn(
             "pi_gains",

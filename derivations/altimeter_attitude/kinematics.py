@@ -45,12 +45,18 @@ __all__ = [
     "third_row_quaternion",
     "euler_from_third_row",
     "third_row_rates",
+    "normalisation_error",
     "normalised_third_row_rates",
     "norm_dynamics",
+    "third_row_rotation",
+    "flight_path_direction",
+    "climb_rate",
     "angular_velocity_addition",
 ]
 
 phi_dot, theta_dot, psi_dot = sp.symbols("phi_dot theta_dot psi_dot", real=True)
+#: speed V, flight-path angle gam (climbing positive) and heading chi of the truth profile
+speed, flight_path, heading = sp.symbols("V gam chi", real=True)
 
 
 def mat_nb(phi: sp.Expr = s.phi, theta: sp.Expr = s.theta, psi: sp.Expr = s.psi) -> sp.Matrix:
@@ -180,10 +186,27 @@ def third_row_rates(c: sp.Matrix = s.c, omega: sp.Matrix = s.omega) -> sp.Matrix
     return skew(omega).T * c
 
 
+def normalisation_error(c: sp.Matrix = s.c, summed: bool = False) -> sp.Expr:
+    """eq. 15: gamma = 1 - c^T c.
+
+    ``summed=True`` keeps the summation order numpy's ``einsum('...i,...i')`` uses for a
+    3-vector on x86-64 (two SIMD lanes: (c1^2 + c3^2) + c2^2), as unevaluated groups, so
+    the generated function rounds like the einsum the filters used before it existed (near
+    c^T c = 1 the order decides the last bits of gamma). Equal to the plain form:
+
+    >>> sp.expand(normalisation_error(summed=True).doit() - normalisation_error())
+    0
+    """
+    if not summed:
+        return 1 - (c.T * c)[0]
+    group = sp.UnevaluatedExpr
+    # eq. 15 in the order (c1^2 + c3^2) + c2^2
+    return 1 - group(group(c[0] ** 2 + c[2] ** 2) + c[1] ** 2)
+
+
 def normalised_third_row_rates(c: sp.Matrix = s.c, omega: sp.Matrix = s.omega) -> sp.Matrix:
-    """eq. 14: c_dot = k gamma c - Omega c, gamma = 1 - c^T c (eq. 15)."""
-    gamma = 1 - (c.T * c)[0]
-    return s.k * gamma * c + third_row_rates(c, omega)
+    """eq. 14: c_dot = k gamma c - Omega c, gamma from eq. 15."""
+    return s.k * normalisation_error(c) * c + third_row_rates(c, omega)
 
 
 def norm_dynamics() -> sp.Expr:
@@ -196,6 +219,79 @@ def norm_dynamics() -> sp.Expr:
     cdot = normalised_third_row_rates()
     ndot = sp.expand(2 * (s.c.T * cdot)[0])
     return sp.factor(ndot.subs(s.c1**2, n - s.c2**2 - s.c3**2))
+
+
+def third_row_rotation(grouped: bool = False) -> dict:
+    """eq. 13 over one step with the rate held: c(t + dt) = exp(-[omega x] dt) c(t).
+
+    With the rotation vector -omega dt = a k (|k| = 1, a >= 0), exp(a [k x]) = I + sin a [k x]
+    + (1 - cos a) [k x]^2: R(a) = that matrix solves dR/da = [k x] R, R(0) = I (checked
+    here for |k| = 1), so it is the exponential. Applied to c with [k x]^2 c = k (k . c) - c:
+
+        c(t + dt) = c cos a + (k x c) sin a + k (k . c) (1 - cos a)          (Rodrigues)
+
+    ``grouped=True`` returns that vector with the sums and products grouped as the
+    complementary filter evaluated them before this function existed (numpy's np.cross and
+    np.sum orders), so the generated function rounds the same. Returns the vector, its
+    symbols (k, c, cos a, sin a) and the matrix check.
+
+    >>> r = third_row_rotation()
+    >>> r["check"]
+    True
+    """
+    k = sp.Matrix(sp.symbols("k1:4", real=True))
+    c = sp.Matrix(sp.symbols("cr1:4", real=True))
+    a, cos_a, sin_a = sp.symbols("a cos_a sin_a", real=True)
+    kx = skew(k)
+    rot = sp.eye(3) + sp.sin(a) * kx + (1 - sp.cos(a)) * kx * kx
+
+    def on_unit_sphere(e: sp.Expr) -> sp.Expr:  # e modulo |k|^2 - 1
+        norm = k[0] ** 2 + k[1] ** 2 + k[2] ** 2 - 1
+        return sp.reduced(sp.expand(e), [norm], k[2], k[1], k[0])[1]
+
+    ode = (rot.diff(a) - kx * rot).applyfunc(on_unit_sphere)
+    ok = ode == sp.zeros(3, 3) and rot.subs(a, 0) == sp.eye(3)
+    trig = {sp.cos(a): cos_a, sp.sin(a): sin_a}
+    # eq. 13 stepped: Rodrigues' formula, c cos a + (k x c) sin a + k (k . c) (1 - cos a)
+    rodrigues = c * cos_a + k.cross(c) * sin_a + k * (k.T * c)[0] * (1 - cos_a)
+    diff = (rot.subs(trig) * c - rodrigues).applyfunc(on_unit_sphere)
+    ok = ok and diff == sp.zeros(3, 1)
+    if grouped:
+        g = sp.UnevaluatedExpr
+        cross = k.cross(c).applyfunc(g)
+        dot = g(g(k[0] * c[0] + k[1] * c[1]) + k[2] * c[2])
+        rodrigues = sp.Matrix(
+            [
+                g(g(c[i] * cos_a) + g(cross[i] * sin_a)) + g(k[i] * dot) * g(1 - cos_a)
+                for i in range(3)
+            ]
+        )
+        ok = ok and (
+            rodrigues.applyfunc(lambda e: e.doit())
+            - (c * cos_a + k.cross(c) * sin_a + k * (k.T * c)[0] * (1 - cos_a))
+        ).applyfunc(sp.expand) == sp.zeros(3, 1)
+    return {"c_next": rodrigues, "args": (*k, *c, cos_a, sin_a), "check": bool(ok)}
+
+
+def flight_path_direction() -> dict[str, sp.Matrix]:
+    """Direction of v^n for flight-path angle gam and heading chi, and its partials.
+
+    The velocity points along the x axis of the frame reached from NED by yaw chi, then
+    pitch gam (the 3-2-1 sequence with no roll): u = C(chi, gam, 0) e_x = [cos gam cos chi,
+    cos gam sin chi, -sin gam]; v^n = V u, so a^n = V_dot u + V (du/dgam gam_dot + du/dchi
+    chi_dot). The truth trajectory of the simulation (our model, not an equation of the
+    paper).
+
+    >>> flight_path_direction()["u"].T
+    Matrix([[cos(chi)*cos(gam), sin(chi)*cos(gam), -sin(gam)]])
+    """
+    u = mat_nb(0, flight_path, heading)[:, 0]
+    return {"u": u, "du_dgam": u.diff(flight_path), "du_dchi": u.diff(heading)}
+
+
+def climb_rate() -> sp.Expr:
+    """h_dot = -V_d (eq. 25) with V_d = V u_3 of :func:`flight_path_direction`: V sin gam."""
+    return -speed * flight_path_direction()["u"][2]
 
 
 def angular_velocity_addition() -> tuple[sp.Matrix, sp.Matrix]:

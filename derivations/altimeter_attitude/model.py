@@ -41,6 +41,8 @@ __all__ = [
     "model_matrices",
     "measurement_matrix",
     "discretisation_series",
+    "input_vectors",
+    "block_structure",
     "noise_columns",
     "euler_state",
     "euler_model_rhs",
@@ -111,6 +113,48 @@ def discretisation_series(order: int = 3) -> dict[str, sp.Matrix]:
         "L1": (integral * B).applyfunc(lambda e: sp.series(e, s.dt, 0, 2).removeO()),
         "G1": (integral * C).applyfunc(lambda e: sp.series(e, s.dt, 0, 2).removeO()),
     }
+
+
+def input_vectors() -> dict[str, sp.Matrix]:
+    """eq. 30: L of the exact zero-order hold and the paper's first-order L = dt B.
+
+    int_0^dt exp(A s) ds B = dt B + dt^2/2 A B + ..., and A^2 B = 0 (B drives V_d, A maps
+    V_d only to h, and nothing depends on h), so the series stops: exact L = [0, 0, 0, dt,
+    -dt^2/2] for any omega, f, gamma.
+
+    >>> input_vectors()["exact"].T
+    Matrix([[0, 0, 0, Delta_t, -Delta_t**2/2]])
+    """
+    m = model_matrices()
+    A, B = m["A"], m["B"]
+    assert sp.expand(A * A * B) == sp.zeros(5, 1)
+    ds = discretisation_series(order=2)
+    return {"B": B, "exact": ds["L"].applyfunc(sp.expand), "first_order": ds["L1"]}
+
+
+def block_structure() -> dict[str, sp.Matrix]:
+    """eq. 26: the block structure of A that the filter's fast discretisation relies on.
+
+    A = [[M, 0], [N, V]] with M = k gamma I - [omega x] (3 x 3, the c block), N = A[3:, :3]
+    = [[f^T], [0]] and V = A[3:, 3:] = [[0, 0], [-1, 0]] (h_dot = -V_d) constant: A is block
+    lower triangular, so exp(A dt) = [[exp(M dt), 0], [int_0^dt exp(V (dt - s)) N exp(M s)
+    ds, exp(V dt)]], and V is nilpotent, so exp(V dt) = I + V dt (``vertical_transition``).
+    The function checks the zero blocks and that N, V are as stated; it returns M, N, V and
+    exp(V dt).
+
+    >>> block_structure()["vertical_transition"]
+    Matrix([
+    [       1, 0],
+    [-Delta_t, 1]])
+    """
+    A = model_matrices()["A"]
+    M, N, V = A[:3, :3], A[3:, :3], A[3:, 3:]
+    assert A[:3, 3:] == sp.zeros(3, 2)
+    assert N == sp.Matrix([[*s.f_t], [0, 0, 0]])
+    assert not V.free_symbols and V * V == sp.zeros(2, 2)
+    exp_v = (V * s.dt).exp()
+    assert sp.simplify(exp_v - (sp.eye(2) + V * s.dt)) == sp.zeros(2, 2)
+    return {"M": M, "N": N, "V": V, "vertical_transition": exp_v}
 
 
 def noise_columns() -> list[sp.Matrix]:

@@ -189,7 +189,7 @@ def paper_gamma_term() -> dict[str, sp.Matrix]:
 
     (the gyro columns G_ci = [e_i x] on the c block give sum_i [e_i x] P [e_i x]^T =
     tr(P) I - P). Returns the literal Gamma (Q kron P) Gamma^T, the closed form and their
-    difference (zero).
+    difference (zero), and the symbols P, (sigma_g2, sigma_a2).
     """
     from derivations.altimeter_attitude import model
     from derivations.altimeter_attitude import symbols as s
@@ -208,4 +208,6 @@ def paper_gamma_term() -> dict[str, sp.Matrix]:
         "literal": literal,
         "closed": closed,
         "difference": (literal - closed).applyfunc(sp.expand),
+        "P": P,
+        "variances": (sg2, sa2),
     }

@@ -176,6 +176,13 @@ def method3() -> dict[str, sp.Expr]:
         sp.expand((A_ * c_**2 + B_ * c_ + E_) ** 2 - (1 - c_**2) * (C_ * c_ + D_) ** 2), c_
     )
     quartic_coeffs = dict(zip(("F", "G", "H", "I", "J"), quartic.all_coeffs(), strict=True))
+    # eq. 47 before squaring, in the coefficient symbols: the residual that rejects the roots
+    # squaring (eq. 49) adds, and its derivative in psi for the Newton polish (c = cos psi,
+    # s = sin psi, so dc/dpsi = -s, ds/dpsi = c)
+    residual = A_ * c_**2 + B_ * c_ + C_ * c_ * s_ + D_ * s_ + E_
+    on_circle = {c_: sp.cos(psi), s_: sp.sin(psi)}
+    back = {sp.cos(psi): c_, sp.sin(psi): s_}
+    d_residual = sp.collect(sp.expand(residual.subs(on_circle).diff(psi).subs(back)), C_)
     return {
         "amp_A": amp_a,
         "amp_B": amp_b,
@@ -183,6 +190,8 @@ def method3() -> dict[str, sp.Expr]:
         "w_peak": w_peak,
         **coeff,
         **quartic_coeffs,
+        "residual47": residual,
+        "residual47_dpsi": d_residual,
         "_quartic_symbols": (A_, B_, C_, D_, E_),
         "_cs": (c_, s_),
     }

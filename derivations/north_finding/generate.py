@@ -97,6 +97,13 @@ def functions() -> list[GeneratedFunction]:
             "    Y = a_x / g.",
         ),
         GeneratedFunction(
+            "ls_sin_phi",
+            (s.c_theta_s_phi, s.theta),
+            l2["sin_phi"],
+            "Levelling methods 2 and 4, eqs. 20-21 and 25-26: sin(phi) from the least-squares\n"
+            "    unknown cos(theta) sin(phi) at the estimated theta.",
+        ),
+        GeneratedFunction(
             "l3_sin_theta",
             (s.ay_90, s.ay_270, s.g),
             l3["sin_theta"],
@@ -184,9 +191,16 @@ def functions() -> list[GeneratedFunction]:
         GeneratedFunction(
             "a3_eq47_residual",
             (c_, s_, A_, B_, C_, D_, E_),
-            A_ * c_**2 + B_ * c_ + C_ * c_ * s_ + D_ * s_ + E_,
+            a3["residual47"],
             "Azimuth method 3, eq. 47 before squaring: its residual, which rejects the roots\n"
             "    that squaring (eq. 49) introduces.",
+        ),
+        GeneratedFunction(
+            "a3_eq47_residual_dpsi",
+            (c_, s_, A_, B_, C_, D_, E_),
+            a3["residual47_dpsi"],
+            "Azimuth method 3, eq. 47: d/dpsi of its residual (sympy diff with c = cos psi,\n"
+            "    s = sin psi), the derivative of the Newton polish.",
         ),
         GeneratedFunction(
             "a4_bias", (s.wx_0, s.wx_180), a4["bias"], "Azimuth method 4, eq. 55: gyro bias."

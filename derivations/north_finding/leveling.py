@@ -124,7 +124,9 @@ def method2() -> dict[str, sp.Expr]:
     """
     products = {sp.sin(theta): s_theta, sp.cos(theta) * sp.sin(phi): c_theta_s_phi}
     row = design_row(ideal_accel("x") / g, products)
-    return {"h_sin_theta": row[0], "h_cth_sphi": row[1]}
+    # sin(phi) from the second unknown X2 = cos(theta) sin(phi) at the estimated theta
+    sin_phi = solve_linear(c_theta_s_phi - sp.cos(theta) * sp.sin(phi), sp.sin(phi))
+    return {"h_sin_theta": row[0], "h_cth_sphi": row[1], "sin_phi": sin_phi}
 
 
 def method3() -> dict[str, sp.Expr]:

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from pipeline.altimeter_attitude import model
 from pipeline.altimeter_attitude.estimates import Estimates
 from pipeline.altimeter_attitude.sensors import Inputs
 from pipeline.generated import altimeter_attitude as gen
@@ -23,15 +24,15 @@ __all__ = ["rotate_third_row", "run_complementary", "run_accel_leveling"]
 
 
 def rotate_third_row(c: np.ndarray, omega: np.ndarray, dt: float) -> np.ndarray:
-    """Solution of c_dot = -omega x c over dt for omega held: rotation of c by -omega dt."""
+    """Solution of c_dot = -omega x c over dt for omega held: rotation of c by -omega dt
+    (the generated Rodrigues formula)."""
     angle_vec = -omega * dt
     angle = np.linalg.norm(angle_vec, axis=-1, keepdims=True)
     small = angle < 1e-12
     axis = np.where(small, 0.0, angle_vec / np.where(small, 1.0, angle))
-    cos, sin = np.cos(angle), np.sin(angle)
-    cross = np.cross(axis, c)
-    dot = np.sum(axis * c, axis=-1, keepdims=True)
-    return c * cos + cross * sin + axis * dot * (1 - cos)
+    cos, sin = np.cos(angle[..., 0]), np.sin(angle[..., 0])
+    k, cc = np.moveaxis(axis, -1, 0), np.moveaxis(c, -1, 0)
+    return np.stack(gen.third_row_rotation(*k, *cc, cos, sin), axis=-1)
 
 
 def _to_estimates(name: str, cs: np.ndarray) -> Estimates:
@@ -44,7 +45,7 @@ def _to_estimates(name: str, cs: np.ndarray) -> Estimates:
         roll_sigma=nan,
         pitch_sigma=nan,
         c=cs,
-        norm_error=1.0 - np.einsum("nti,nti->nt", cs, cs),
+        norm_error=model.normalisation_error(cs),
     )
 
 

@@ -110,7 +110,7 @@ def run_linear_kf(
         # eq. 26 at gamma = 0 for the whole chunk; k gamma enters per step (eq. 30)
         disc = model.ChunkDiscretisation(*model.a_blocks(gyro, accel), dt)
         for j, step in enumerate(range(c0, c1)):
-            gamma = 1.0 - np.einsum("ni,ni->n", x[:, :3], x[:, :3])  # eq. 15 at xhat_{k-1|k-1}
+            gamma = model.normalisation_error(x[:, :3])  # at xhat_{k-1|k-1}
             F = disc.transition(j, k * gamma)
             G = dt * model.noise_matrix_eq33(x)  # G(xhat_{k-1|k-1}) = dt C(x), eq. 30
             # eq. 31: F P F^T + G Q G^T + Gamma (Q kron P_{k-1|k-1}) Gamma^T
@@ -142,7 +142,7 @@ def run_linear_kf(
                 roll_sigma=np.sqrt(var[sl, :, 0]),
                 pitch_sigma=np.sqrt(var[sl, :, 1]),
                 c=c[sl],
-                norm_error=1.0 - np.einsum("nti,nti->nt", c[sl], c[sl]),
+                norm_error=model.normalisation_error(c[sl]),
             )
         )
     return out

@@ -18,6 +18,9 @@ from pipeline.generated import altimeter_attitude as gen
 
 __all__ = [
     "GAMMA_COLUMNS",
+    "A_CONSTANT",
+    "B_VECTOR",
+    "normalisation_error",
     "matrix_a",
     "a_blocks",
     "noise_matrix",
@@ -37,7 +40,21 @@ __all__ = [
 GAMMA_COLUMNS = np.asarray(gen.noise_gamma(), dtype=float).reshape(5, 6, 5).transpose(1, 0, 2)
 _GC_STACK = GAMMA_COLUMNS.reshape(30, 5)  # the G_ci stacked: rows (i, a)
 _GC_STACK_T = np.ascontiguousarray(_GC_STACK.T)
-B_VECTOR = np.array([0.0, 0.0, 0.0, 1.0, 0.0])  # eq. 26
+B_VECTOR = np.asarray(gen.input_matrix_b(), dtype=float)  # eq. 26: B of x_dot = A x + B g
+
+
+def _vertical_transition(dt: float) -> np.ndarray:
+    """exp(V dt) (2, 2) of the constant (V_d, h) block V of A: F[3:, 3:] (eq. 30)."""
+    return np.asarray(gen.vertical_transition(dt), dtype=float).reshape(2, 2)
+
+
+def normalisation_error(c: np.ndarray) -> np.ndarray:
+    """gamma = 1 - c^T c (..., ) of c (..., 3), the generated eq. 15.
+
+    >>> float(normalisation_error(np.array([0.6, 0.0, 0.8])))
+    0.0
+    """
+    return gen.normalisation_error(c[..., 0], c[..., 1], c[..., 2])
 
 
 def matrix_a(gyro: np.ndarray, accel: np.ndarray, k: float, gamma: np.ndarray) -> np.ndarray:
@@ -114,7 +131,7 @@ def discretise(
     if input_matrix == "exact":
         return F, phi[:, :5, 5]
     if input_matrix == "first_order":
-        return F, np.broadcast_to(B_VECTOR * dt, (n, 5)).copy()
+        return F, np.broadcast_to(input_vector(dt, input_matrix), (n, 5)).copy()
     raise ValueError(f"input_matrix is {input_matrix!r}; allowed: 'exact', 'first_order'")
 
 
@@ -123,11 +140,12 @@ def discretise_structured(
 ) -> tuple[np.ndarray, np.ndarray]:
     """The same F and L as :func:`discretise`, from the block structure of eq. 26's A.
 
-    A = [[M, 0, 0], [f^T, 0, 0], [0, -1, 0]] with M = k gamma I - [omega x] (3 x 3). Its
+    A = [[M, 0, 0], [f^T, 0, 0], [0, -1, 0]] with M = k gamma I - [omega x] (3 x 3)
+    (:func:`derivations.altimeter_attitude.model.block_structure` checks it). Its
     exponential is block lower triangular:
 
-        F[:3, :3] = exp(M dt),   F[3, :3] = f^T Phi1,   F[4, :3] = -f^T Phi2,
-        F[3, 3] = F[4, 4] = 1,   F[4, 3] = -dt,         L = [0, 0, 0, dt, -dt^2/2]
+        F[:3, :3] = exp(M dt),   F[3, :3] = f^T Phi1,   F[4, :3] = A[4, 3] f^T Phi2,
+        F[3:, 3:] = exp(V dt) (generated ``vertical_transition``),   L = ``input_vector``
 
     with Phi_j = sum_i M^i dt^(i+j) / (i+j)!. Only M enters the series, and ||M dt|| is
     the rotation per step (< 0.1 here): the series stops at the first order whose next term
@@ -156,16 +174,9 @@ def discretise_structured(
     F = np.zeros((n, 5, 5))
     F[:, :3, :3] = s0
     F[:, 3, :3] = np.einsum("ni,nij->nj", f, s1) * dt
-    F[:, 4, :3] = -np.einsum("ni,nij->nj", f, s2) * dt**2
-    F[:, 3, 3] = F[:, 4, 4] = 1.0
-    F[:, 4, 3] = -dt
-    if input_matrix == "exact":
-        L = np.array([0.0, 0.0, 0.0, dt, -(dt**2) / 2])
-    elif input_matrix == "first_order":
-        L = B_VECTOR * dt
-    else:
-        raise ValueError(f"input_matrix is {input_matrix!r}; allowed: 'exact', 'first_order'")
-    return F, np.broadcast_to(L, (n, 5))
+    F[:, 4, :3] = a[:, 4, 3:4] * (np.einsum("ni,nij->nj", f, s2) * dt**2)
+    F[:, 3:, 3:] = _vertical_transition(dt)
+    return F, np.broadcast_to(input_vector(dt, input_matrix), (n, 5))
 
 
 def noise_matrix_eq33(x: np.ndarray) -> np.ndarray:
@@ -198,15 +209,17 @@ def _right_factor(q_diag: tuple[float, ...]) -> np.ndarray:
 def gamma_term_closed(P: np.ndarray, gyro_var: float, accel_var: float, dt: float) -> np.ndarray:
     """The same term for the paper's Q = diag(sigma_g^2 I3, sigma_a^2 I3), in closed form.
 
-    Derived in :func:`derivations.altimeter_attitude.multiplicative_noise.paper_gamma_term`:
-    dt^2 [sigma_g^2 (tr(P_cc) I3 - P_cc) on the c block, sigma_a^2 tr(P_cc) at (V_d, V_d)].
+    Derived in :func:`derivations.altimeter_attitude.multiplicative_noise.paper_gamma_term`
+    and generated (``gamma_term_closed``): dt^2 [sigma_g^2 (tr(P_cc) I3 - P_cc) on the c
+    block, sigma_a^2 tr(P_cc) at (V_d, V_d)]; zero elsewhere. About 10x faster than
+    :func:`gamma_kron_term` for a few hundred runs (tests prove the two forms equal).
     """
-    pcc = P[:, :3, :3]
-    tr = np.trace(pcc, axis1=-2, axis2=-1)
+    upper = [P[:, i, j] for i in range(3) for j in range(i, 3)]
+    *block, vv = gen.gamma_term_closed(*upper, gyro_var, accel_var, dt)
     out = np.zeros_like(P)
-    out[:, :3, :3] = gyro_var * (tr[:, None, None] * np.eye(3) - pcc)
-    out[:, 3, 3] = accel_var * tr
-    return dt**2 * out
+    out[:, :3, :3] = np.stack(block, -1).reshape(-1, 3, 3)
+    out[:, 3, 3] = vv
+    return out
 
 
 class ChunkDiscretisation:
@@ -217,7 +230,8 @@ class ChunkDiscretisation:
 
         F[:3, :3] = e^(a dt) exp(W dt)
         F[3, :3]  =  f^T Phi1(a),  Phi1(a) = sum_j a^j / j! Psi_j,  Psi_j = int_0^dt s^j exp(W s) ds
-        F[4, :3]  = -f^T Phi2(a),  Phi2(a) = sum_j a^j / j! Xi_j,   Xi_j = int_0^dt (dt - s) s^j exp(W s) ds
+        F[4, :3]  = A[4, 3] f^T Phi2(a),  Phi2(a) = sum_j a^j / j! Xi_j,
+                    Xi_j = int_0^dt (dt - s) s^j exp(W s) ds
 
     Psi_j and Xi_j (j = 0, 1, 2) are series in W; W is skew, so each collapses to
     c0 I + A1 W dt + A2 (W dt)^2 with scalar series A1, A2 in theta^2 = |omega dt|^2
@@ -234,6 +248,7 @@ class ChunkDiscretisation:
     ) -> None:
         # w_block (N, C, 3, 3): the c block of A at gamma = 0 (W = -[omega x]); f_row (N, C, 3)
         self.w_block, self.f_row, self.dt = w_block, f_row, dt
+        self._vertical = _vertical_transition(dt)
         w = w_block * dt  # W dt, skew-symmetric (eq. 26 at gamma = 0)
         w2 = w @ w
         f = f_row
@@ -290,28 +305,32 @@ class ChunkDiscretisation:
     def transition(self, j: int, a: np.ndarray) -> np.ndarray:
         """F (N, 5, 5) of step j of the chunk for a = k gamma (N,)."""
         if np.abs(a).max() * self.dt > self.A_DT_MAX:
-            full = np.zeros((a.shape[0], 5, 5))
+            full = np.broadcast_to(A_CONSTANT, (a.shape[0], 5, 5)).copy()
             full[:, :3, :3] = self.w_block[:, j] + a[:, None, None] * np.eye(3)
             full[:, 3, :3] = self.f_row[:, j]
-            full[:, 4, 3] = -1.0
             return discretise_structured(full, self.dt)[0]
         n = a.shape[0]
         F = np.zeros((n, 5, 5))
         F[:, :3, :3] = np.exp(a * self.dt)[:, None, None] * self.exp_w[:, j]
         a1, a2 = a[:, None], 0.5 * a[:, None] ** 2
         F[:, 3, :3] = self.f_psi[0][:, j] + a1 * self.f_psi[1][:, j] + a2 * self.f_psi[2][:, j]
-        F[:, 4, :3] = -(self.f_xi[0][:, j] + a1 * self.f_xi[1][:, j] + a2 * self.f_xi[2][:, j])
-        F[:, 3, 3] = F[:, 4, 4] = 1.0
-        F[:, 4, 3] = -self.dt
+        F[:, 4, :3] = A_CONSTANT[4, 3] * (
+            self.f_xi[0][:, j] + a1 * self.f_xi[1][:, j] + a2 * self.f_xi[2][:, j]
+        )
+        F[:, 3:, 3:] = self._vertical
         return F
 
 
 def input_vector(dt: float, input_matrix: str = "exact") -> np.ndarray:
-    """L of eq. 30: exact [0, 0, 0, dt, -dt^2/2] or the paper's first-order dt B."""
+    """L of eq. 30: exact [0, 0, 0, dt, -dt^2/2] or the paper's first-order dt B.
+
+    >>> input_vector(0.5).tolist()
+    [0.0, 0.0, 0.0, 0.5, -0.125]
+    """
     if input_matrix == "exact":
-        return np.array([0.0, 0.0, 0.0, dt, -(dt**2) / 2])
+        return np.asarray(gen.input_vector_exact(dt), dtype=float)
     if input_matrix == "first_order":
-        return B_VECTOR * dt
+        return np.asarray(gen.input_vector_first_order(dt), dtype=float)
     raise ValueError(f"input_matrix is {input_matrix!r}; allowed: 'exact', 'first_order'")
 
 
@@ -341,3 +360,5 @@ def euler_cov_from_third_row(c: np.ndarray, P_c: np.ndarray) -> np.ndarray:
 
 
 _INPUT_BASIS = _input_basis()
+# the constant part of eq. 26's A (its only entry: A[4, 3] = -1 of h_dot = -V_d)
+A_CONSTANT = matrix_a(np.zeros((1, 3)), np.zeros((1, 3)), 1.0, np.zeros(1))[0]

@@ -49,6 +49,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from pipeline.altimeter_attitude.profiles import Profiles
+from pipeline.generated import altimeter_attitude as gen
 from pipeline.generated import frames
 
 __all__ = ["MAX_QUAD_STEP_S", "Truth", "altitude", "load_factor", "mat_from_euler", "truth"]
@@ -132,8 +133,8 @@ def altitude(profiles: Profiles, t) -> np.ndarray:
     hi = np.where(j + 1 == n_sub[piece], b[piece], lo + width)
     mid, half = 0.5 * (lo + hi), 0.5 * (hi - lo)
     nodes = mid[:, None] + half[:, None] * _GL_X[None, :]
-    integrand = profiles.channel_value("speed_m_s", nodes) * np.sin(
-        profiles.channel_value("flight_path_deg", nodes)
+    integrand = gen.climb_rate(
+        profiles.channel_value("speed_m_s", nodes), profiles.channel_value("flight_path_deg", nodes)
     )
     sub = half * (integrand @ _GL_W)
     per_piece = np.bincount(piece, weights=sub, minlength=a.size)
@@ -156,11 +157,9 @@ def truth(profiles: Profiles, t) -> Truth:
     # eq. 4: body rate relative to NED from the Euler rates (generated 3-2-1 Euler-rate map)
     rate_b = frames.body_rate_from_euler_rates(theta, phi, phi_dot, theta_dot, psi_dot)
 
-    s_g, c_g = np.sin(gam), np.cos(gam)
-    s_c, c_c = np.sin(chi), np.cos(chi)
-    unit = np.stack([c_g * c_c, c_g * s_c, -s_g], axis=-1)  # d v^n / d V
-    d_gam = np.stack([-s_g * c_c, -s_g * s_c, -c_g], axis=-1)  # d unit / d gam
-    d_chi = np.stack([-c_g * s_c, c_g * c_c, np.zeros_like(gam)], axis=-1)  # d unit / d chi
+    # v^n = V u(gam, chi) and the partials of u (generated flight-path direction)
+    u = np.stack(gen.flight_path_direction(gam, chi), axis=-1).reshape(-1, 3, 3)
+    unit, d_gam, d_chi = u[:, 0], u[:, 1], u[:, 2]
     vel_n = V[:, None] * unit
     acc_n = V_dot[:, None] * unit + (V * gam_dot)[:, None] * d_gam + (V * chi_dot)[:, None] * d_chi
 

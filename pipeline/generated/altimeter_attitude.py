@@ -24,11 +24,10 @@ def _broadcast(*outs):
         for a in arrays
     )
 
-__all__ = ['model_matrix_a', 'noise_matrix_c', 'noise_gamma', 'normalisation_error', 'third_row_from_euler', 'euler_from_third_row', 'euler_jacobian_third_row', 'euler_model_rhs', 'euler_noise_jacobian', 'euler_process_noise', 'euler_state_jacobian', 'accel_third_row', 'leveling_angles', 'pi_gains']
+__all__ = ['model_matrix_a', 'noise_matrix_c', 'input_matrix_b', 'input_vector_exact', 'input_vector_first_order', 'vertical_transition', 'gamma_term_closed', 'noise_gamma', 'normalisation_error', 'third_row_from_euler', 'euler_from_third_row', 'euler_jacobian_third_row', 'euler_model_rhs', 'euler_noise_jacobian', 'euler_process_noise', 'euler_state_jacobian', 'accel_third_row', 'leveling_angles', 'third_row_rotation', 'flight_path_direction', 'climb_rate', 'pi_gains']
 
 #: Functions the pipeline does not call, each with the reason it is generated.
 AUDIT_ONLY = {
-    'normalisation_error': 'eq. 15; NOT YET CALLED (issue 12 open): linear_kf.py and complementary.py evaluate 1 - c.c with einsum, whose rounding near c.c = 1 differs',
     'euler_noise_jacobian': 'd(UKF model)/d[n_w, n_a]; the filters take it through euler_process_noise (dt^2 J Sigma J^T), generated from the same derivation',
     'leveling_angles': 'eq. 11 as derived, for the audit; levelling runs through accel_third_row (eq. 17-b) and euler_from_third_row, equal to it when ||f|| = g',
 }
@@ -104,6 +103,71 @@ def noise_matrix_c(c1, c2, c3):
     out28 = 0
     out29 = 0
     return _broadcast(out0, out1, out2, out3, out4, out5, out6, out7, out8, out9, out10, out11, out12, out13, out14, out15, out16, out17, out18, out19, out20, out21, out22, out23, out24, out25, out26, out27, out28, out29)
+
+
+def input_matrix_b():
+    """Eq. 26: the input vector B of x_dot = A x + B g + C(x) w (gravity drives V_d)."""
+    out0 = 0
+    out1 = 0
+    out2 = 0
+    out3 = 1
+    out4 = 0
+    return _broadcast(out0, out1, out2, out3, out4)
+
+
+def input_vector_exact(dt):
+    """Eq. 30: L = int_0^dt exp(A s) ds B of the exact zero-order hold (the series stops:
+    A^2 B = 0), independent of the IMU outputs and gamma."""
+    out0 = 0
+    out1 = 0
+    out2 = 0
+    out3 = dt
+    out4 = -1/2*dt**2
+    return _broadcast(out0, out1, out2, out3, out4)
+
+
+def input_vector_first_order(dt):
+    """Eq. 30 as the paper discretises: L = dt B (first order in dt)."""
+    out0 = 0
+    out1 = 0
+    out2 = 0
+    out3 = dt
+    out4 = 0
+    return _broadcast(out0, out1, out2, out3, out4)
+
+
+def vertical_transition(dt):
+    """Eq. 30: exp(V dt) (2 x 2, row by row) of the constant (V_d, h) block V of eq. 26's A,
+    the lower-right block of F = exp(A dt) (A is block lower triangular)."""
+    out0 = 1
+    out1 = 0
+    out2 = -dt
+    out3 = 1
+    return _broadcast(out0, out1, out2, out3)
+
+
+def gamma_term_closed(P_11, P_12, P_13, P_22, P_23, P_33, sigma_g2, sigma_a2, dt):
+    """Eq. 31's Gamma (Q kron P) Gamma^T for G = dt C(x) of eq. 26 and Q = diag(sigma_g2 I3,
+    sigma_a2 I3), in closed form from the c block P_cc of P (upper triangle P_11 ..
+    P_33): its c block (3 x 3, row by row), then its (V_d, V_d) entry; every other
+    entry is 0. Equal to the literal Kronecker form of eqs. 32-33 (a test)."""
+    _x0 = P_22 + P_33
+    _x1 = dt**2
+    _x2 = _x1*sigma_g2
+    _x3 = -P_12*_x2
+    _x4 = -P_13*_x2
+    _x5 = -P_23*_x2
+    out0 = _x0*_x2
+    out1 = _x3
+    out2 = _x4
+    out3 = _x3
+    out4 = _x2*(P_11 + P_33)
+    out5 = _x5
+    out6 = _x4
+    out7 = _x5
+    out8 = _x2*(P_11 + P_22)
+    out9 = _x1*sigma_a2*(P_11 + _x0)
+    return _broadcast(out0, out1, out2, out3, out4, out5, out6, out7, out8, out9)
 
 
 def noise_gamma():
@@ -262,8 +326,9 @@ def noise_gamma():
 
 
 def normalisation_error(c1, c2, c3):
-    """Eq. 15: gamma = 1 - c^T c."""
-    out0 = -c1**2 - c2**2 - c3**2 + 1
+    """Eq. 15: gamma = 1 - c^T c, summed as (c1^2 + c3^2) + c2^2 (the rounding of
+    numpy's einsum over a 3-vector)."""
+    out0 = 1 - (c2**2 + (c1**2 + c3**2))
     return out0
 
 
@@ -414,6 +479,45 @@ def leveling_angles(ft_x, ft_y, ft_z, g):
     out0 = np.arctan2(-ft_y, -ft_z)
     out1 = np.arcsin(ft_x/g)
     return _broadcast(out0, out1)
+
+
+def third_row_rotation(k1, k2, k3, c1, c2, c3, cos_a, sin_a):
+    """Eq. 13 over one step with omega held: c rotated by a about the unit axis k
+    (a k = -omega dt), c cos a + (k x c) sin a + k (k . c)(1 - cos a) (Rodrigues),
+    summed in the order of numpy's np.cross and np.sum."""
+    _x0 = c3*k3 + (c1*k1 + c2*k2)
+    _x1 = 1 - cos_a
+    out0 = _x1*(_x0*k1) + (c1*cos_a + sin_a*(-c2*k3 + c3*k2))
+    out1 = _x1*(_x0*k2) + (c2*cos_a + sin_a*(c1*k3 - c3*k1))
+    out2 = _x1*(_x0*k3) + (c3*cos_a + sin_a*(-c1*k2 + c2*k1))
+    return _broadcast(out0, out1, out2)
+
+
+def flight_path_direction(gam, chi):
+    """Truth trajectory: u = v^n / V = [cos gam cos chi, cos gam sin chi, -sin gam] (the x
+    axis after yaw chi and pitch gam), then du/dgam, then du/dchi (9 values)."""
+    _x0 = np.cos(chi)
+    _x1 = np.cos(gam)
+    _x2 = _x0*_x1
+    _x3 = np.sin(chi)
+    _x4 = _x1*_x3
+    _x5 = np.sin(gam)
+    out0 = _x2
+    out1 = _x4
+    out2 = -_x5
+    out3 = -_x0*_x5
+    out4 = -_x3*_x5
+    out5 = -_x1
+    out6 = -_x4
+    out7 = _x2
+    out8 = 0
+    return _broadcast(out0, out1, out2, out3, out4, out5, out6, out7, out8)
+
+
+def climb_rate(V, gam):
+    """Truth trajectory, eq. 25: h_dot = -V_d = V sin gam."""
+    out0 = V*np.sin(gam)
+    return out0
 
 
 def pi_gains(omega_c, xi):

@@ -22,7 +22,7 @@ def _broadcast(*outs):
         for a in arrays
     )
 
-__all__ = ['specific_force_b', 'angular_rate_b', 'l1_sin_theta', 'l1_sin_phi', 'l2_design_row', 'l3_sin_theta', 'l3_sin_phi', 'l4_design_row', 'l5_bias', 'l5_components', 'l5_scale', 'l5_scale_approx', 'a1c1_cos_psi', 'a1c2_coeffs', 'a2_coeffs', 'sinusoid_roots', 'a3_peak', 'a3_eq47_coeffs', 'a3_quartic_coeffs', 'a3_eq47_residual', 'a4_bias', 'a4_omegas', 'a4_coeffs', 'a4_scale', 'a5_coeffs', 'a5_scale_roots', 'a5_scale_approx', 'a5_cos_psi', 'a6_omega3', 'a6_scale', 'a6_scale_approx']
+__all__ = ['specific_force_b', 'angular_rate_b', 'l1_sin_theta', 'l1_sin_phi', 'l2_design_row', 'ls_sin_phi', 'l3_sin_theta', 'l3_sin_phi', 'l4_design_row', 'l5_bias', 'l5_components', 'l5_scale', 'l5_scale_approx', 'a1c1_cos_psi', 'a1c2_coeffs', 'a2_coeffs', 'sinusoid_roots', 'a3_peak', 'a3_eq47_coeffs', 'a3_quartic_coeffs', 'a3_eq47_residual', 'a3_eq47_residual_dpsi', 'a4_bias', 'a4_omegas', 'a4_coeffs', 'a4_scale', 'a5_coeffs', 'a5_scale_roots', 'a5_scale_approx', 'a5_cos_psi', 'a6_omega3', 'a6_scale', 'a6_scale_approx']
 
 
 def specific_force_b(g, omega_ie, lat, psi, theta, phi, tau, lever_arm, table_rate, table_accel):
@@ -89,6 +89,13 @@ def l2_design_row(tau):
     out0 = np.cos(tau)
     out1 = -np.sin(tau)
     return _broadcast(out0, out1)
+
+
+def ls_sin_phi(cth_sphi, theta):
+    """Levelling methods 2 and 4, eqs. 20-21 and 25-26: sin(phi) from the least-squares
+    unknown cos(theta) sin(phi) at the estimated theta."""
+    out0 = cth_sphi/np.cos(theta)
+    return out0
 
 
 def l3_sin_theta(ay_90, ay_270, g):
@@ -241,6 +248,13 @@ def a3_eq47_residual(c_psi, s_psi, A, B, C, D, E):
     """Azimuth method 3, eq. 47 before squaring: its residual, which rejects the roots
     that squaring (eq. 49) introduces."""
     out0 = A*c_psi**2 + B*c_psi + C*c_psi*s_psi + D*s_psi + E
+    return out0
+
+
+def a3_eq47_residual_dpsi(c_psi, s_psi, A, B, C, D, E):
+    """Azimuth method 3, eq. 47: d/dpsi of its residual (sympy diff with c = cos psi,
+    s = sin psi), the derivative of the Newton polish."""
+    out0 = -2*A*c_psi*s_psi - B*s_psi + C*(c_psi**2 - s_psi**2) + D*c_psi
     return out0
 
 

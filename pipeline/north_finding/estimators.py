@@ -82,7 +82,7 @@ def levelling(readings: Readings, site: Site, methods: tuple[str, ...]) -> Estim
         h1, h2 = gen.l2_design_row(np.deg2rad(readings.tau_deg[cols]))
         s_th, cth_sphi = _least_squares(h1, h2, acc[:, cols] / g)
         theta = _asin(s_th)
-        phi = _asin(cth_sphi / np.cos(theta))
+        phi = _asin(gen.ls_sin_phi(cth_sphi, theta))
         out["L2", "theta_deg"], out["L2", "phi_deg"] = np.rad2deg(theta), np.rad2deg(phi)
     if "L3" in methods:
         theta = _asin(gen.l3_sin_theta(ax(90, "L3", "y"), ax(270, "L3", "y"), g))
@@ -93,7 +93,7 @@ def levelling(readings: Readings, site: Site, methods: tuple[str, ...]) -> Estim
         h1, h2 = gen.l4_design_row(np.deg2rad(readings.tau_deg[cols]))
         cth_sphi, s_th = _least_squares(h1, h2, -acc[:, cols] / g)
         theta = _asin(s_th)
-        phi = _asin(cth_sphi / np.cos(theta))
+        phi = _asin(gen.ls_sin_phi(cth_sphi, theta))
         out["L4", "theta_deg"], out["L4", "phi_deg"] = np.rad2deg(theta), np.rad2deg(phi)
     if "L5" in methods:
         a0, a90, a180 = ax(0, "L5"), ax(90, "L5"), ax(180, "L5")
@@ -138,8 +138,7 @@ def solve_quartic_psi(coeffs47: tuple[np.ndarray, ...], prior: np.ndarray) -> np
     for _ in range(2):
         cp, sp_ = np.cos(psi), np.sin(psi)
         r = gen.a3_eq47_residual(cp, sp_, *coef)
-        # d/dpsi of A c^2 + B c + C c s + D s + E
-        dr = -2 * coef[0] * cp * sp_ - coef[1] * sp_ + coef[2] * (cp**2 - sp_**2) + coef[3] * cp
+        dr = gen.a3_eq47_residual_dpsi(cp, sp_, *coef)  # d/dpsi of eq. 47's residual
         step = np.where(np.abs(dr) > 1e-12, r / np.where(dr == 0, 1.0, dr), 0.0)
         psi = psi - np.clip(step, -0.1, 0.1)
     return select_nearest(psi, prior, real)

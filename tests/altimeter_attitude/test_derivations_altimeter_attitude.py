@@ -16,6 +16,8 @@
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -229,3 +231,86 @@ def test_series_discretisation_agrees_with_the_matrix_exponential():
         assert errs[key][0] / errs[key][1] == pytest.approx(16, rel=0.15)
     # the paper's first-order L = dt B misses -g dt^2/2 in h (per unit g)
     assert ds["L"] - ds["L1"] == sp.Matrix([0, 0, 0, 0, -(s.dt**2) / 2])
+
+
+# ------------------------------------------- the generated forms the filter calls (issue 12)
+
+
+@functools.lru_cache(maxsize=1)
+def _generated_functions():
+    from derivations.altimeter_attitude import generate
+
+    return {f.name: f for f in generate.functions()}
+
+
+def _generated(name: str):
+    return _generated_functions()[name]
+
+
+def test_generated_gamma_term_closed_is_the_kronecker_form_symbolically():
+    """The closed form the filter calls (generated ``gamma_term_closed``) equals eq. 31's
+    literal Gamma (Q kron P) Gamma^T of eqs. 32-33 for a fully symbolic symmetric P:
+    sympy simplifies the difference, entry by entry, to 0."""
+    pg = mn.paper_gamma_term()
+    *block, vv = _generated("gamma_term_closed").exprs
+    closed = sp.zeros(5, 5)
+    closed[:3, :3] = sp.Matrix(3, 3, block)
+    closed[3, 3] = vv
+    assert (pg["literal"] - closed).applyfunc(sp.simplify) == sp.zeros(5, 5)
+    # the proof is not vacuous: dropping the sigma_a^2 entry leaves a nonzero difference
+    closed[3, 3] = 0
+    assert (pg["literal"] - closed).applyfunc(sp.simplify) != sp.zeros(5, 5)
+
+
+def test_generated_normalisation_error_is_eq15():
+    """The generated eq. 15 is 1 - c^T c (symbolically), and rounds like the einsum the
+    filters used before it (bit for bit on x86-64, where the order was read off)."""
+    import platform
+
+    from pipeline.generated import altimeter_attitude as gen
+
+    expr = _generated("normalisation_error").exprs
+    assert sp.simplify(expr.doit() - (1 - (s.c.T * s.c)[0])) == 0
+    rng = np.random.default_rng(15)
+    c = rng.normal(size=(20000, 3))
+    c /= np.linalg.norm(c, axis=-1, keepdims=True)
+    c *= 1 + 1e-9 * rng.normal(size=(20000, 1))
+    got = gen.normalisation_error(c[:, 0], c[:, 1], c[:, 2])
+    np.testing.assert_allclose(got, 1 - np.sum(c**2, axis=-1), rtol=0, atol=1e-15)
+    if platform.machine() in ("x86_64", "AMD64"):
+        np.testing.assert_array_equal(got, 1.0 - np.einsum("ni,ni->n", c, c))
+
+
+def test_generated_input_vectors_and_vertical_block_are_the_zoh_of_eq26():
+    """L (exact and first order) and exp(V dt) as generated, against sympy's matrix exponential
+    of the augmented [[A, B], [0, 0]] at random numeric IMU outputs (an independent path)."""
+    from pipeline.generated import altimeter_attitude as gen
+
+    mm = md.model_matrices()
+    rng = np.random.default_rng(26)
+    syms = [*s.omega_t, *s.f_t, s.k, s.gamma]
+    vals = dict(zip(syms, [*rng.normal(size=6), 1.0, 0.01], strict=True))
+    dt = 0.02
+    aug = np.zeros((6, 6))
+    aug[:5, :5] = np.array(mm["A"].subs(vals), dtype=float)
+    aug[:5, 5] = np.array(mm["B"], dtype=float).ravel()
+    big = expm(aug * dt)
+    np.testing.assert_allclose(gen.input_vector_exact(dt), big[:5, 5], rtol=0, atol=1e-16)
+    np.testing.assert_array_equal(gen.input_vector_first_order(dt), aug[:5, 5] * dt)
+    np.testing.assert_allclose(
+        np.reshape(gen.vertical_transition(dt), (2, 2)), big[3:5, 3:5], rtol=0, atol=1e-16
+    )
+    np.testing.assert_array_equal(gen.input_matrix_b(), aug[:5, 5])
+
+
+def test_rodrigues_step_is_derived_and_grouping_keeps_the_value():
+    """kinematics.third_row_rotation: R(a) = I + sin a [k x] + (1 - cos a)[k x]^2 solves
+    dR/da = [k x] R on |k| = 1, and R c is the (grouped) Rodrigues vector; the check is
+    not vacuous: off the unit sphere the same ODE residual is not 0."""
+    r = kin.third_row_rotation(grouped=True)
+    assert r["check"] is True
+    k = sp.Matrix(r["args"][:3])
+    a = sp.Symbol("a", real=True)
+    kx = sp.Matrix([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    rot = sp.eye(3) + sp.sin(a) * kx + (1 - sp.cos(a)) * kx * kx
+    assert (rot.diff(a) - kx * rot).applyfunc(sp.expand) != sp.zeros(3, 3)

@@ -321,3 +321,30 @@ def test_mat_from_euler_is_rz_ry_rx():
     np.testing.assert_allclose(mat, rz(psi) @ ry(theta) @ rx(phi), rtol=0, atol=1e-15)
     c = [-math.sin(theta), math.sin(phi) * math.cos(theta), math.cos(phi) * math.cos(theta)]
     np.testing.assert_allclose(mat[2], c, rtol=0, atol=1e-16)
+
+
+def test_generated_flight_path_direction_is_the_rotated_x_axis_and_its_partials():
+    """u(gam, chi) against the first column of the generated 3-2-1 C_b^n (yaw chi, pitch gam,
+    no roll), its partials against central differences, and h_dot = -V u_3: independent
+    paths, each failing on a sign or a swapped angle."""
+    from pipeline.generated import altimeter_attitude as gen
+    from pipeline.generated import frames
+
+    rng = np.random.default_rng(25)
+    gam, chi, speed = (
+        rng.uniform(-1.2, 1.2, 300),
+        rng.uniform(-3, 3, 300),
+        rng.uniform(50, 300, 300),
+    )
+
+    def u(g, c):
+        return np.stack(gen.flight_path_direction(g, c), -1).reshape(-1, 3, 3)
+
+    got = u(gam, chi)
+    x_axis = np.swapaxes(frames.mat_tn(chi, gam, np.zeros_like(gam)), -1, -2)[:, :, 0]
+    np.testing.assert_allclose(got[:, 0], x_axis, rtol=0, atol=1e-15)
+    h = 1e-6
+    for k, (dg, dc) in ((1, (h, 0.0)), (2, (0.0, h))):
+        numeric = (u(gam + dg, chi + dc)[:, 0] - u(gam - dg, chi - dc)[:, 0]) / (2 * h)
+        np.testing.assert_allclose(got[:, k], numeric, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(gen.climb_rate(speed, gam), -speed * got[:, 0, 2], rtol=1e-15)

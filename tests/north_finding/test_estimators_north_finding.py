@@ -508,3 +508,26 @@ def test_readings_csv_round_trip_equals_monte_carlo_trial_0(tmp_path, paper):
     # and both are close to the truth (noise-level errors only)
     assert cli["L2", "phi_deg"] == pytest.approx(50.0, abs=0.05)
     assert cli["L4", "theta_deg"] == pytest.approx(30.0, abs=0.05)
+
+
+def test_newton_derivative_of_eq47_is_the_derivative_of_its_residual():
+    """The generated d/dpsi of eq. 47's residual (Newton polish of A3) against a central
+    difference of the generated residual along psi: an independent numeric path (a sign or
+    factor error in the derivative moves it by O(1), far beyond the 1e-7 tolerance)."""
+    rng = np.random.default_rng(47)
+    coef = rng.normal(size=(5, 200))
+    psi = rng.uniform(-np.pi, np.pi, 200)
+    h = 1e-6
+    res = [gen.a3_eq47_residual(np.cos(p), np.sin(p), *coef) for p in (psi + h, psi - h)]
+    numeric = (res[0] - res[1]) / (2 * h)
+    got = gen.a3_eq47_residual_dpsi(np.cos(psi), np.sin(psi), *coef)
+    np.testing.assert_allclose(got, numeric, rtol=0, atol=1e-7 * np.abs(coef).sum(axis=0).max())
+
+
+def test_least_squares_levelling_recovers_sin_phi_from_its_unknown():
+    """L2/L4 solve for X2 = cos(theta) sin(phi); the generated ls_sin_phi inverts it (a wrong
+    trig factor, e.g. sin(theta), fails at 1e-12)."""
+    rng = np.random.default_rng(21)
+    theta, phi = rng.uniform(-1.4, 1.4, 500), rng.uniform(-1.5, 1.5, 500)
+    got = gen.ls_sin_phi(np.cos(theta) * np.sin(phi), theta)
+    np.testing.assert_allclose(got, np.sin(phi), rtol=0, atol=1e-12)

@@ -20,7 +20,9 @@
     transport-theorem term typed by hand (``np.cross(2 * w_ie + w_en, v)``,
     ``v_i - np.cross(earth_rate_e(w), r)``);
   - a period from a square root, ``2 pi / sqrt(k)`` (the Schuler period of a generated
-    ``oscillation_period`` / ``schuler_period`` typed again).
+    ``oscillation_period`` / ``schuler_period`` typed again);
+  - Rodrigues' rotation formula: one sum that uses sin(a) and 1 - cos(a) of one angle
+    (``v cos a + (k x v) sin a + k (k . v)(1 - cos a)``).
   Its false positives are declared in :data:`ALLOWED` with the reason.
 
 The heuristic itself is tested on code that re-types those formulas (it must flag them) and
@@ -48,11 +50,6 @@ PAPER_DIRS = sorted(p.parent for p in (ROOT / "pipeline").glob("*/paper.py"))
 ALLOWED: dict[tuple[str, str, str], str] = {
     ("pipeline/north_finding/cli.py", "main", "earth_rate_literal"): (
         "the default of the --omega-ie command-line parameter: a value, not a formula"
-    ),
-    ("pipeline/altimeter_attitude/trajectory.py", "truth", "cos_sin_array"): (
-        "velocity direction V [cos gam cos chi, cos gam sin chi, -sin gam] of the truth "
-        "profile and its partial derivatives in gam and chi (flight-path kinematics, not a "
-        "rotation matrix; not yet generated)"
     ),
 }
 
@@ -216,6 +213,21 @@ def findings(source: str) -> set[tuple[str, str, int]]:
                         idx = _element_index(t)
                         if idx:
                             elements[idx[0]].append((idx[1], idx[2], v, node.lineno))
+            # Rodrigues' rotation: one sum with cos(a), sin(a) and 1 - cos(a) of one angle
+            if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add | ast.Sub):
+                uses = scope.trig_uses(node)
+                one_minus_cos = {
+                    a
+                    for sub in _walk_scope(node)
+                    if isinstance(sub, ast.BinOp)
+                    and isinstance(sub.op, ast.Sub)
+                    and isinstance(sub.left, ast.Constant)
+                    and sub.left.value == 1
+                    for f, a in scope.trig_uses(sub.right)
+                    if f == "cos"
+                }
+                if one_minus_cos & {a for f, a in uses if f == "sin"}:
+                    found.add((fname, "rodrigues", node.lineno))
             # Earth rate: a float literal, or an Earth-rate name times cos/sin
             if isinstance(node, ast.Constant) and isinstance(node.value, float):
                 if abs(node.value - 7.292115e-5) <= 1e-3 * 7.292115e-5:
@@ -315,6 +327,15 @@ def constants(k_sh):
     "ground_velocity_cross": """
 def ground(traj, tr):
     return tr.v_i - np.cross(frames.earth_rate_e(traj.earth.omega_e), tr.r_i)
+""",
+    "rodrigues": """
+def rotate(v, k, angle):
+    cos, sin = np.cos(angle), np.sin(angle)
+    return v * cos + np.cross(k, v) * sin + k * (k @ v) * (1 - cos)
+""",
+    "rodrigues_inline": """
+def rotate(v, k, a):
+    return v * np.cos(a) + np.cross(k, v) * np.sin(a) + k * (k @ v) * (1.0 - np.cos(a))
 """,
 }
 
