@@ -126,7 +126,9 @@ def derive_code(step):
     """Input function: the code a derive step of one paper runs (its import graph)."""
     modules = {
         "audit": lambda paper: code(paper.audit_module, script="equation_audit.py"),
-        "codegen": lambda paper: code(paper.generator_module, script="codegen_check.py"),
+        "codegen": lambda paper: code(
+            paper.generator_module, "derivations.generate_frames", script="codegen_check.py"
+        ),
     }[step]
     return lambda wildcards: modules(PAPERS[wildcards.paper])
 

@@ -6,6 +6,7 @@ rule codegen_check:
     input:
         code=derive_code("codegen"),
         generated="pipeline/generated/{paper}.py",
+        frames="pipeline/generated/frames.py",
     output:
         kept(f"{RESULTS}/{{paper}}/codegen_check.txt"),
     log:
