@@ -55,7 +55,7 @@ FS_LABEL = FONT_PT["label"]
 FS_TICK = FONT_PT["tick"]
 FS_LEGEND = FONT_PT["legend"]
 #: height (in) of one row of panels: alone, stacked, side by side at the text width
-PANEL_IN = {"single": 1.9, "stacked": 1.3, "wide": 2.1}
+PANEL_IN = {"single": 1.3, "stacked": 0.85, "wide": 1.8}
 #: the bottom axis' tick labels and label below the rows (in)
 XAXIS_IN = 0.3
 #: line widths and marker sizes are given for a 9-in canvas; at the print width they are
@@ -102,16 +102,20 @@ def style_axes(ax: Any, ylabel: str | None = None, xlabel: str | None = None) ->
         ax.set_xlabel(xlabel, fontsize=FS_LABEL)
 
 
-def _log_ticks(ax: Any) -> None:
-    """Readable log-axis labels: 0.05, 0.1, 0.2, 0.5, 1, 2 over a few decades, 10^k beyond."""
+def _log_ticks(ax: Any, height_in: float) -> None:
+    """Readable log-axis labels for a panel ``height_in`` tall: 0.05, 0.1, 0.2, 0.5, 1, 2 over a
+    few decades, the decades alone where those would crowd (over ~4 labels an inch), 10^k
+    beyond."""
     lo, hi = ax.get_ylim()
     if lo <= 0 or hi <= lo:
         return
-    if math.log10(hi / lo) <= 3.5:
-        ax.yaxis.set_major_locator(LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
+    decades = math.log10(hi / lo)
+    if decades <= 3.5:
+        subs = (1.0, 2.0, 5.0) if 3 * decades <= 4 * height_in else (1.0,)
+        ax.yaxis.set_major_locator(LogLocator(base=10.0, subs=subs))
         ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
     else:
-        ax.yaxis.set_major_locator(LogLocator(base=10.0, numticks=12))
+        ax.yaxis.set_major_locator(LogLocator(base=10.0, numticks=max(3, int(4 * height_in))))
         ax.yaxis.set_major_formatter(LogFormatterSciNotation())
     ax.yaxis.set_minor_formatter(NullFormatter())
 
@@ -135,12 +139,12 @@ def _wrap(text: str, chars: int) -> list[str]:
 
 
 def _fit_ylabels(fig: Figure, panel_in: float) -> None:
-    """An axis label longer than its panel is tall goes on two lines."""
+    """An axis label longer than its panel is tall goes on as many lines as it needs."""
+    chars = _chars(0.95 * panel_in, FS_LABEL)
     for ax in fig.axes:
         label = ax.get_ylabel()
-        if label and "\n" not in label and len(label) > _chars(panel_in, FS_LABEL):
-            first, *rest = _wrap(label, (len(label) + 1) // 2 + 4)
-            ax.set_ylabel("\n".join([first, " ".join(rest)] if rest else [first]))
+        if label and "\n" not in label and len(label) > chars:
+            ax.set_ylabel("\n".join(_wrap(label, chars)))
 
 
 def _legend(fig: Figure, entries: dict[str, Any], ncol: int) -> float:
@@ -181,7 +185,7 @@ def finish(fig: Figure, title: str, subtitle: str, ncol: int = 3) -> Figure:
     fig.set_size_inches(width, rows * panel + 2.0)
     for ax in fig.axes:
         if ax.get_yscale() == "log":
-            _log_ticks(ax)
+            _log_ticks(ax, panel)
         ax.tick_params(labelsize=FS_TICK, width=0.6, length=3.0)
         for line in ax.get_lines():
             line.set_linewidth(line.get_linewidth() * LINE_SCALE)

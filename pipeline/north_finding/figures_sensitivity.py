@@ -34,7 +34,7 @@ def plot_sensitivity_figure(
     """Fig. 6: RMS percent error of ``quantity`` against ``n_avg`` (log-log), one
     line per method; ``default_n_avg`` as a vertical line; the published % error
     of each method as a short horizontal tick at the right edge."""
-    fig = new_figure((COLUMN, 3.4))
+    fig = new_figure((COLUMN, 3.1))
     ax = fig.subplots()
     sel = sensitivity[sensitivity["quantity"].astype(str) == quantity]
     wide = sel.pivot_table(index="n_avg", columns="method", values="rms_error_pct", aggfunc="first")

@@ -42,7 +42,7 @@ class FigureSpec:
     stem: str
     title: str
     panels: tuple[Panel, ...]
-    size: tuple[float, float] = (COLUMN, 2.9)
+    size: tuple[float, float] = (COLUMN, 2.7)
 
 
 FIGURES: tuple[FigureSpec, ...] = (
@@ -60,7 +60,7 @@ FIGURES: tuple[FigureSpec, ...] = (
         "fig3_azimuth",
         "Fig. 3 — azimuth ψ percent error per azimuth method (real sensor)",
         (Panel("psi_deg", ("A1c1", "A1c2", "A2", "A3", "A4", "A5"), xlabel="azimuth method"),),
-        size=(COLUMN, 2.9),
+        size=(COLUMN, 2.7),
     ),
     FigureSpec(
         "fig4_bias",
@@ -69,7 +69,7 @@ FIGURES: tuple[FigureSpec, ...] = (
             Panel("acc_bias_ug", ("L5",), "(a) accelerometer bias", "levelling method"),
             Panel("gyro_bias_rad_s", ("A4",), "(b) gyro bias", "azimuth method"),
         ),
-        size=(COLUMN, 2.9),
+        size=(COLUMN, 2.7),
     ),
     FigureSpec(
         "fig5_scale",
@@ -77,14 +77,9 @@ FIGURES: tuple[FigureSpec, ...] = (
         (
             Panel("acc_scale", ("L5",), "(a) accelerometer S", "levelling method"),
             Panel("gyro_scale", ("A4", "A5", "A6"), "(b) gyro S", "azimuth method"),
-            Panel(
-                "gyro_scale_approx",
-                ("A5", "A6"),
-                "(c) gyro S (first-order approx.)",
-                "azimuth method",
-            ),
+            Panel("gyro_scale_approx", ("A5", "A6"), "(c) gyro S, first order", "azimuth method"),
         ),
-        size=(FULL, 2.7),
+        size=(FULL, 2.6),
     ),
 )
 SENSITIVITY_STEM = "fig6_sensitivity"

@@ -53,7 +53,7 @@ CASES = {
     "ch1_ch3": "both drifts\n(channels 1 and 3)",
 }
 #: figure height (in) and the height of a main panel over its difference panel
-HEIGHT_IN = 4.3
+HEIGHT_IN = 3.25
 HEIGHT_RATIOS = (2.3, 1.0)
 
 

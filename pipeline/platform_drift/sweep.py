@@ -61,7 +61,7 @@ def plot(frame: pd.DataFrame, png_path: str | Path) -> list[Path]:
     """Fig. 9 (not in the paper) of the latitude sweep, written to ``png_path`` and the SVG
     beside it; returns both paths."""
     with matplotlib.rc_context(RC):
-        fig, axes = plt.subplots(1, 2, figsize=(WIDTH_IN, 2.9))
+        fig, axes = plt.subplots(1, 2, figsize=(WIDTH_IN, 2.6))
         titles = {"ch1": "channel-1 drift 0.01 deg/h", "ch3": "channel-3 drift 0.1 deg/h"}
         for ax, case in zip(axes, CASES, strict=True):
             for scheme, style in STYLE.items():
