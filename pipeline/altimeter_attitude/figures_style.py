@@ -135,7 +135,8 @@ def _wrap(text: str, chars: int) -> list[str]:
     """``text`` in lines of at most ``chars`` characters, never breaking inside ``$...$``."""
     parts = text.split("$")
     kept = "$".join(p.replace(" ", "\u00a0") if k % 2 else p for k, p in enumerate(parts))
-    return [line.replace("\u00a0", " ") for line in textwrap.wrap(kept, chars)]
+    lines = textwrap.wrap(kept, chars, break_long_words=False, break_on_hyphens=False)
+    return [line.replace("\u00a0", " ") for line in lines]
 
 
 def _fit_ylabels(fig: Figure, panel_in: float) -> None:

@@ -89,7 +89,7 @@ def _panel(
             ax.plot(cur["t_s"], cur["error_m"] / scale, **style)
     ax.set_title(title)
     ax.set_xlabel("time (s)")
-    ax.set_ylabel(f"position error ({'µm' if unit == 'um' else unit})")
+    ax.set_ylabel(f"error ({'µm' if unit == 'um' else unit})")  # the title says "position"
     ax.grid(alpha=0.3)
 
 

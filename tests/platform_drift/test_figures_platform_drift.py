@@ -72,7 +72,7 @@ def test_simulated_curve_drawn_visibly_on_the_strapdown_one(tmp_path):
             assert ax.lines.index(sim) > ax.lines.index(strap)
             assert sim.get_linestyle() == "--" and sim.get_marker() == "o"
             assert sim.get_color() != strap.get_color()
-            assert ax.get_ylabel() == "position error (km)"
+            assert ax.get_ylabel() == "error (km)"
         for ax, below in zip(fig.axes[1:4], fig.axes[4:7], strict=True):
             assert below.get_shared_x_axes().joined(ax, below)
             assert below.get_title() == "sim. − strapdown"
@@ -81,7 +81,7 @@ def test_simulated_curve_drawn_visibly_on_the_strapdown_one(tmp_path):
             t = below.lines[-1].get_xdata()
             k_sim, k_strap = (list(STYLE).index(s) + 1 for s in ("proposed_simulated", "strapdown"))
             np.testing.assert_allclose(diff, (k_sim - k_strap) * t)  # simulated - strapdown, m
-        assert fig.axes[0].get_ylabel() == "position error (µm)"
+        assert fig.axes[0].get_ylabel() == "error (µm)"
         assert "Fig. 5 (reproduced)" in fig._suptitle.get_text()
     finally:
         plt.close(fig)
