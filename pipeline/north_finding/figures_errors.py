@@ -19,8 +19,9 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
+from pipeline.figure_print import FONT_PT
 from pipeline.north_finding.figures_spec import FigureSpec, Panel
-from pipeline.north_finding.figures_style import new_figure, tight
+from pipeline.north_finding.figures_style import new_figure, tight, title
 
 __all__ = ["ERROR_LABELS", "plot_error_figure"]
 
@@ -94,13 +95,13 @@ def _plot_panel(
         pos(real_v),
         ls="none",
         marker="o",
-        ms=8,
+        ms=5.5,
         mfc="none",
         mec=C_REAL,
-        mew=1.6,
+        mew=1.2,
         zorder=4,
     )
-    ax.plot(x + 0.3, pos(pub_v), ls="none", marker="D", ms=7, color=C_PUB, zorder=5)
+    ax.plot(x + 0.3, pos(pub_v), ls="none", marker="D", ms=5, color=C_PUB, zorder=5)
     # Values that a log axis cannot show, said in words at the bottom.
     for xi, rv, pv in zip(x, real_v, pub_v, strict=True):
         notes = [txt for v, txt in ((rv, "noise-free 0"), (pv, "published 0")) if v == 0]
@@ -113,7 +114,7 @@ def _plot_panel(
                 textcoords="offset points",
                 ha="center",
                 va="bottom",
-                fontsize=8.5,
+                fontsize=FONT_PT["note"],
                 color="#444",
             )
     absent = ~have_mc & np.isnan(real_v) & np.isnan(pub_v)
@@ -124,7 +125,7 @@ def _plot_panel(
             xycoords=("data", "axes fraction"),
             ha="center",
             va="center",
-            fontsize=9,
+            fontsize=FONT_PT["note"],
             color="#777",
             rotation=90,
         )
@@ -144,26 +145,27 @@ def _plot_panel(
 
 
 def _error_legend_handles(n_trials: int | None) -> list[Any]:
-    mc = "Monte Carlo |error|" + (f", {n_trials} trials" if n_trials else "")
+    # the box and whisker percentiles are in the caption; the legend names the three marks
+    mc = "Monte Carlo\n" + (f"({n_trials} trials)" if n_trials else "(box plot)")
     return [
         Patch(
             facecolor=C_BOX,
             edgecolor=C_BOX_EDGE,
-            label=f"{mc}\nmedian, box 25–75 %, whiskers 5–95 %",
+            label=mc,
         ),
         Line2D(
             [],
             [],
             ls="none",
             marker="o",
-            ms=8,
+            ms=5.5,
             mfc="none",
             mec=C_REAL,
-            mew=1.6,
+            mew=1.2,
             label="real sensor,\nnoise-free",
         ),
         Line2D(
-            [], [], ls="none", marker="D", ms=7, color=C_PUB, label="published\n(paper's table)"
+            [], [], ls="none", marker="D", ms=5, color=C_PUB, label="published\n(paper's table)"
         ),
     ]
 
@@ -185,7 +187,7 @@ def plot_error_figure(
     axes = fig.subplots(1, len(spec.panels), squeeze=False, width_ratios=widths)[0]
     for ax, panel in zip(axes, spec.panels, strict=True):
         _plot_panel(ax, panel, mc, real, published)
-    fig.suptitle(spec.title)
+    title(fig, spec.title)
     n = mc["n"].dropna()
     n_trials = int(n.max()) if len(n) else None
     legend = fig.legend(
@@ -194,8 +196,8 @@ def plot_error_figure(
         ncol=3,
         frameon=False,
         bbox_to_anchor=(0.5, 0.0),
-        columnspacing=1.5,
-        handletextpad=0.5,
+        columnspacing=1.0,
+        handletextpad=0.4,
     )
     tight(fig, bottom_artist=legend)
     return fig

@@ -16,9 +16,10 @@ import pandas as pd
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
+from pipeline.figure_print import FONT_PT
 from pipeline.north_finding.columns import AZIMUTH_METHODS
 from pipeline.north_finding.figures_spec import SENSITIVITY_TITLE
-from pipeline.north_finding.figures_style import new_figure, tight
+from pipeline.north_finding.figures_style import COLUMN, new_figure, tight, title
 
 __all__ = ["plot_sensitivity_figure"]
 
@@ -33,7 +34,7 @@ def plot_sensitivity_figure(
     """Fig. 6: RMS percent error of ``quantity`` against ``n_avg`` (log-log), one
     line per method; ``default_n_avg`` as a vertical line; the published % error
     of each method as a short horizontal tick at the right edge."""
-    fig = new_figure((7.4, 5.6))
+    fig = new_figure((COLUMN, 3.1))
     ax = fig.subplots()
     sel = sensitivity[sensitivity["quantity"].astype(str) == quantity]
     wide = sel.pivot_table(index="n_avg", columns="method", values="rms_error_pct", aggfunc="first")
@@ -54,8 +55,8 @@ def plot_sensitivity_figure(
             col.index.to_numpy(float),
             col.to_numpy(float),
             marker="o",
-            ms=4,
-            lw=1.5,
+            ms=3,
+            lw=1.2,
             color=colors(k),
             label=m,
         )
@@ -67,7 +68,7 @@ def plot_sensitivity_figure(
                 [pub, pub],
                 transform=ax.get_yaxis_transform(),
                 color=colors(k),
-                lw=3.5,
+                lw=2.5,
                 solid_capstyle="butt",
             )
     ax.set_xscale("log")
@@ -82,7 +83,7 @@ def plot_sensitivity_figure(
             transform=ax.transAxes,
             ha="center",
             va="center",
-            fontsize=11,
+            fontsize=FONT_PT["label"],
             color="#777",
         )
     if default_n_avg is not None and np.isfinite(default_n_avg) and default_n_avg > 0:
@@ -92,7 +93,7 @@ def plot_sensitivity_figure(
                 color="#555",
                 ls="--",
                 lw=1.2,
-                label=f"scenario default $n_\\mathrm{{avg}}$ = {default_n_avg:.3g}",
+                label=f"default\n$n_\\mathrm{{avg}}$ = {default_n_avg:.3g}",
             )
         )
     handles.append(
@@ -100,21 +101,22 @@ def plot_sensitivity_figure(
             [],
             [],
             color="#555",
-            lw=3.5,
+            lw=2.5,
             solid_capstyle="butt",
-            label="published % error (tick at right, method colour)",
+            label="published\n(ticks at right)",
         )
     )
-    ax.set_xlabel(r"samples averaged per table position, $n_\mathrm{avg}$")
+    ax.set_xlabel(r"samples averaged per table position, $n_\mathrm{avg}$ (-)")
     ax.set_ylabel(r"RMS percent error of $\hat{\psi}$ (%)")
-    fig.suptitle(SENSITIVITY_TITLE)
+    title(fig, SENSITIVITY_TITLE)
     legend = fig.legend(
         handles=handles,
         loc="lower center",
         ncol=4,
         frameon=False,
         bbox_to_anchor=(0.5, 0.0),
-        columnspacing=1.2,
+        columnspacing=0.8,
+        handlelength=1.5,
     )
     tight(fig, bottom_artist=legend)
     return fig

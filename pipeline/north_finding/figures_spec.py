@@ -13,6 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from pipeline.north_finding.columns import LEVELING_METHODS
+from pipeline.north_finding.figures_style import COLUMN, FULL
 
 __all__ = [
     "Panel",
@@ -41,7 +42,7 @@ class FigureSpec:
     stem: str
     title: str
     panels: tuple[Panel, ...]
-    size: tuple[float, float] = (6.6, 4.8)
+    size: tuple[float, float] = (COLUMN, 2.7)
 
 
 FIGURES: tuple[FigureSpec, ...] = (
@@ -59,7 +60,7 @@ FIGURES: tuple[FigureSpec, ...] = (
         "fig3_azimuth",
         "Fig. 3 — azimuth ψ percent error per azimuth method (real sensor)",
         (Panel("psi_deg", ("A1c1", "A1c2", "A2", "A3", "A4", "A5"), xlabel="azimuth method"),),
-        size=(7.4, 4.8),
+        size=(COLUMN, 2.7),
     ),
     FigureSpec(
         "fig4_bias",
@@ -68,7 +69,7 @@ FIGURES: tuple[FigureSpec, ...] = (
             Panel("acc_bias_ug", ("L5",), "(a) accelerometer bias", "levelling method"),
             Panel("gyro_bias_rad_s", ("A4",), "(b) gyro bias", "azimuth method"),
         ),
-        size=(7.0, 4.8),
+        size=(COLUMN, 2.7),
     ),
     FigureSpec(
         "fig5_scale",
@@ -76,14 +77,9 @@ FIGURES: tuple[FigureSpec, ...] = (
         (
             Panel("acc_scale", ("L5",), "(a) accelerometer S", "levelling method"),
             Panel("gyro_scale", ("A4", "A5", "A6"), "(b) gyro S", "azimuth method"),
-            Panel(
-                "gyro_scale_approx",
-                ("A5", "A6"),
-                "(c) gyro S (first-order approx.)",
-                "azimuth method",
-            ),
+            Panel("gyro_scale_approx", ("A5", "A6"), "(c) gyro S, first order", "azimuth method"),
         ),
-        size=(10.0, 4.8),
+        size=(FULL, 2.6),
     ),
 )
 SENSITIVITY_STEM = "fig6_sensitivity"

@@ -1,26 +1,41 @@
 """The look shared by the north-finding figures: resolution, fonts and grid (:data:`RC`, applied
-by the figures step with ``matplotlib.rc_context``), a new figure with a renderer, and the one
-layout pass.
+by the figures step with ``matplotlib.rc_context``), the widths they are drawn at, a new figure
+with a renderer, the title wrapped to the width, and the one layout pass.
+
+A figure is drawn at the width the PDF report prints it (:mod:`pipeline.figure_print`):
+:data:`COLUMN` for one set beside another, :data:`FULL` for one alone at the text width; the
+fonts are the print sizes of :data:`pipeline.figure_print.FONT_PT` (7.5-9 pt).
 """
 
 from __future__ import annotations
 
+import textwrap
 from typing import Any
 
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-__all__ = ["DPI", "RC", "new_figure", "tight"]
+from pipeline.figure_print import COLUMN_WIDTH_IN, FONT_PT, TEXT_WIDTH_IN
 
-DPI = 150
+__all__ = ["COLUMN", "DPI", "FULL", "RC", "new_figure", "tight", "title"]
+
+#: drawn widths (inches): beside another figure, alone at the text width
+COLUMN = COLUMN_WIDTH_IN
+FULL = TEXT_WIDTH_IN
+#: raster resolution of the PNG (the HTML pages): a column-wide figure is ~650 px wide
+DPI = 200
 RC = {
-    "font.size": 10,
-    "axes.titlesize": 10.5,
-    "axes.labelsize": 10,
-    "xtick.labelsize": 10,
-    "ytick.labelsize": 9.5,
-    "legend.fontsize": 9,
-    "figure.titlesize": 11.5,
+    "font.size": FONT_PT["label"],
+    "axes.titlesize": FONT_PT["panel_title"],
+    "axes.labelsize": FONT_PT["label"],
+    "xtick.labelsize": FONT_PT["tick"],
+    "ytick.labelsize": FONT_PT["tick"],
+    "legend.fontsize": FONT_PT["legend"],
+    "figure.titlesize": FONT_PT["title"],
+    "lines.linewidth": 1.2,
+    "axes.linewidth": 0.6,
+    "xtick.major.width": 0.6,
+    "ytick.major.width": 0.6,
     "axes.grid": True,
     "axes.grid.which": "both",
     "grid.alpha": 0.25,
@@ -35,6 +50,12 @@ def new_figure(size: tuple[float, float]) -> Figure:
     return fig
 
 
+def title(fig: Figure, text: str) -> None:
+    """The figure's title, wrapped to its width (about 0.52 em per character)."""
+    chars = int(fig.get_figwidth() * 72 / (0.52 * FONT_PT["title"]))
+    fig.suptitle("\n".join(textwrap.wrap(text, chars)))
+
+
 def tight(fig: Figure, bottom_artist: Any | None = None) -> None:
     """Fix the layout once with ``tight_layout`` (plain arithmetic on text
     extents). Constrained layout is avoided on purpose: its solver result
@@ -43,4 +64,4 @@ def tight(fig: Figure, bottom_artist: Any | None = None) -> None:
     if bottom_artist is not None:
         renderer = fig.canvas.get_renderer()
         bottom = bottom_artist.get_window_extent(renderer).height / fig.bbox.height + 0.01
-    fig.tight_layout(rect=(0.0, bottom, 1.0, 1.0), pad=0.6, w_pad=1.2)
+    fig.tight_layout(rect=(0.0, bottom, 1.0, 1.0), pad=0.4, w_pad=0.8)

@@ -6,9 +6,10 @@ combined drift cases, with the three curves (proposed_analytic, proposed_simulat
 strapdown) and the true-azimuth diagnostic (dotted) that shows which part of the error
 eqs. 33-36 model. The simulated proposed curve is drawn last, dashed with open markers, so
 that it stays visible where it lies on the strapdown curve (the finding of this
-reproduction: with a channel-3 drift the two coincide); an inset gives their difference in
-metres. In a scenario whose vehicle moves the analytic curve is labelled as the stationary
-formula it is.
+reproduction: with a channel-3 drift the two coincide); a panel below each gives their
+difference in metres, on its own axis. In a scenario whose vehicle moves the analytic curve is
+labelled as the stationary formula it is. The four panels stand side by side at the text width
+(:mod:`pipeline.platform_drift.figures_style`), panel (1) over the height of both rows.
 The values the paper prints for a panel (``config/published/platform_drift.yaml``, by its
 ``figure: "Fig. N (k)"``) are overlaid: the strapdown error at 2 h as a black diamond, the
 crossover time as a dotted vertical line.
@@ -26,83 +27,51 @@ from pathlib import Path
 from typing import Any
 
 import matplotlib
+import numpy as np
+import pandas as pd
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
+from pipeline.figure_files import write_png_svg
+from pipeline.platform_drift.figures_style import DPI, RC, STYLE, WIDTH_IN, legend_below
+from pipeline.platform_drift.quantities import FINAL_S
+from pipeline.platform_drift.scenario import load_scenario
+from pipeline.verdicts import load_published
 
-from pipeline.figure_files import write_png_svg  # noqa: E402
-from pipeline.platform_drift.quantities import FINAL_S  # noqa: E402
-from pipeline.platform_drift.scenario import load_scenario  # noqa: E402
-from pipeline.verdicts import load_published  # noqa: E402
+__all__ = ["DPI", "FIGURES", "STYLE", "plot_scenario", "run"]
 
-__all__ = ["FIGURES", "plot_scenario", "run"]
-
-DPI = 130
 FIGURES = {
     "stationary": (5, "stationary vehicle"),
     "latitude_change": (6, "large latitude change"),
     "longitude_change": (7, "large longitude change"),
     "lat_lon_change": (8, "large latitude and longitude change"),
 }
-#: drawing order: the simulated proposed curve last, on top of the strapdown one
-STYLE = {
-    "proposed_analytic": dict(color="tab:blue", lw=1.6, label="proposed, analytic (eqs. 32/36)"),
-    "proposed_true_azimuth": dict(
-        color="0.45", lw=1.3, ls=":", label="proposed, true azimuth rate (diagnostic)"
-    ),
-    "strapdown": dict(color="tab:red", lw=2.6, alpha=0.8, label="strapdown"),
-    "proposed_simulated": dict(
-        color="tab:purple", lw=1.4, ls="--", marker="o", mfc="none", ms=4.5, markevery=36,
-        label="proposed, nonlinear simulation", zorder=4,
-    ),
-}  # fmt: skip
-ANALYTIC_MOVING = "proposed, analytic eqs. 32/36 (for a vehicle at rest; start latitude)"
-CASES = {"ch1": "channel-1 drift 0.01 deg/h", "ch3": "channel-3 drift 0.1 deg/h", "ch1_ch3": "both"}
+ANALYTIC_MOVING = "proposed, analytic eqs. 32/36\n(vehicle at rest, start latitude)"
+CASES = {
+    "ch1": "channel-1 drift\n0.01 deg/h",
+    "ch3": "channel-3 drift\n0.1 deg/h",
+    "ch1_ch3": "both drifts\n(channels 1 and 3)",
+}
+#: figure height (in) and the height of a main panel over its difference panel
+HEIGHT_IN = 3.25
+HEIGHT_RATIOS = (2.3, 1.0)
 
 
 def _curve(frame: pd.DataFrame, case: str, scheme: str) -> pd.DataFrame:
     return frame[(frame["case"] == case) & (frame["scheme"] == scheme)].sort_values("t_s")
 
 
-#: inset boxes (axes fraction: x, y, width, height), tried in turn: upper left, lower right
-INSET_BOXES = ((0.1, 0.56, 0.4, 0.3), (0.55, 0.1, 0.4, 0.3))
-
-
-def _inset_box(ax) -> tuple[float, float, float, float]:
-    """The first inset box no drawn curve passes through (else the least crossed one)."""
-    ax.autoscale_view()
-    to_axes = ax.transData + ax.transAxes.inverted()
-    points = np.vstack([to_axes.transform(line.get_xydata()) for line in ax.lines])
-
-    def crossed(box):
-        x, y, w, h = box
-        inside = (points[:, 0] >= x) & (points[:, 0] <= x + w)
-        return int(np.sum(inside & (points[:, 1] >= y - 0.03) & (points[:, 1] <= y + h + 0.08)))
-
-    return min(INSET_BOXES, key=crossed)
-
-
-def _difference_inset(ax, frame: pd.DataFrame, case: str) -> None:
-    """Inset: simulated proposed minus strapdown error (m), where the two are drawn."""
+def _difference_panel(ax, frame: pd.DataFrame, case: str) -> None:
+    """Simulated proposed minus strapdown error (m) against time, on its own axis."""
     sim, strap = _curve(frame, case, "proposed_simulated"), _curve(frame, case, "strapdown")
-    if sim.empty or strap.empty:
-        return
-    diff = sim["error_m"].to_numpy() - strap.set_index("t_s")["error_m"].reindex(sim["t_s"])
-    ins = ax.inset_axes(_inset_box(ax), zorder=6)
-    white = {"facecolor": "white", "edgecolor": "none", "pad": 1.0}
-    ins.axhline(0.0, color="tab:red", lw=1.0, alpha=0.8)
-    ins.plot(sim["t_s"], diff.to_numpy(), color=STYLE["proposed_simulated"]["color"], lw=1.2)
-    ins.set_title(
-        "proposed simulated - strapdown (m)",
-        fontsize=7,
-        pad=2,
-        bbox=white,
-    )
-    ins.set_xlabel("time (s)", fontsize=6, labelpad=1, bbox=white)
-    ins.tick_params(labelsize=6, pad=1)
-    ins.grid(alpha=0.3)
+    ax.axhline(0.0, color=STYLE["strapdown"]["color"], lw=1.0, alpha=0.75)
+    if not sim.empty and not strap.empty:
+        diff = sim["error_m"].to_numpy() - strap.set_index("t_s")["error_m"].reindex(sim["t_s"])
+        ax.plot(sim["t_s"], diff.to_numpy(), color=STYLE["proposed_simulated"]["color"], lw=1.0)
+    ax.set_title("sim. − strapdown", fontsize=RC["legend.fontsize"], pad=2)
+    ax.set_ylabel("difference (m)")
+    ax.set_xlabel("time (s)")
+    ax.grid(alpha=0.3)
 
 
 def _panel(
@@ -118,9 +87,9 @@ def _panel(
                 else style
             )
             ax.plot(cur["t_s"], cur["error_m"] / scale, **style)
-    ax.set_title(title, fontsize=10)
+    ax.set_title(title)
     ax.set_xlabel("time (s)")
-    ax.set_ylabel(f"position error ({'µm' if unit == 'um' else unit})")
+    ax.set_ylabel(f"error ({'µm' if unit == 'um' else unit})")  # the title says "position"
     ax.grid(alpha=0.3)
 
 
@@ -131,11 +100,13 @@ def _published_marks(ax, items: Sequence[Mapping[str, Any]]) -> None:
         if item["quantity"] == "error_2h_m":
             km = value * (1000.0 if item.get("unit") == "km" else 1.0) / 1000.0
             ax.plot(
-                [FINAL_S], [km], "D", color="k", ms=7, mfc="none", mew=1.6, zorder=5,
-                label="published 2 h error (paper's text)",
+                [FINAL_S], [km], "D", color="k", ms=5, mfc="none", mew=1.1, zorder=5,
+                label="published 2 h error\n(paper's text)",
             )  # fmt: skip
         elif item["quantity"] == "crossover_s":
-            ax.axvline(value, color="k", ls=":", lw=1.3, label="published crossover (paper's text)")
+            ax.axvline(
+                value, color="k", ls=":", lw=1.0, label="published crossover\n(paper's text)"
+            )
 
 
 def _panel_number(item: Mapping[str, Any]) -> tuple[int, int] | None:
@@ -156,8 +127,21 @@ def plot_scenario(
     if diag_path.is_file():
         errors = pd.concat([errors, pd.read_csv(diag_path)], ignore_index=True)
     number, label = FIGURES.get(name, (None, name))
-    fig, axes = plt.subplots(2, 2, figsize=(11, 7.5))
-    ax1 = axes[0, 0]
+    with matplotlib.rc_context(RC):
+        return _figure(errors, number, label, scenario_file, published)
+
+
+def _figure(
+    errors: pd.DataFrame,
+    number: int | None,
+    label: str,
+    scenario_file: Path | None,
+    published: Sequence[Mapping[str, Any]],
+) -> Figure:
+    fig = Figure(figsize=(WIDTH_IN, HEIGHT_IN), dpi=DPI)
+    FigureCanvasAgg(fig)
+    grid = fig.add_gridspec(2, 4, height_ratios=HEIGHT_RATIOS)
+    ax1 = fig.add_subplot(grid[:, 0])
     moving = False
     if scenario_file is not None and scenario_file.is_file():
         traj = load_scenario(scenario_file).trajectory()
@@ -165,38 +149,38 @@ def plot_scenario(
         lat, lon = traj.latlon(t)
         moving = float(np.ptp(lat)) > 0 or float(np.ptp(lon)) > 0
         if moving:
-            ax1.plot(np.rad2deg(lon), np.rad2deg(lat), color="k")
-            ax1.plot(np.rad2deg(lon[0]), np.rad2deg(lat[0]), "o", color="tab:green", label="start")
-            ax1.plot(np.rad2deg(lon[-1]), np.rad2deg(lat[-1]), "s", color="tab:red", label="end")
+            ax1.plot(np.rad2deg(lon), np.rad2deg(lat), color="k", lw=1.0)
+            ax1.plot(np.rad2deg(lon[0]), np.rad2deg(lat[0]), "o", color="tab:green", ms=4,
+                     label="start")  # fmt: skip
+            ax1.plot(np.rad2deg(lon[-1]), np.rad2deg(lat[-1]), "s", color="tab:red", ms=4,
+                     label="end")  # fmt: skip
             ax1.set_xlabel("longitude (deg)")
             ax1.set_ylabel("latitude (deg)")
-            ax1.set_title("(1) trajectory", fontsize=10)
+            ax1.set_title("(1) trajectory")
             ax1.grid(alpha=0.3)
-            ax1.legend(fontsize=8)
+            ax1.legend(loc="best", handletextpad=0.3)
     if not moving:
-        _panel(ax1, errors, "none", "(1) no error source (integration floor)", unit="um")
-    for ax, (case, text), k in zip(axes.flat[1:], CASES.items(), (2, 3, 4), strict=True):
+        _panel(ax1, errors, "none", "(1) no error source\n(integration floor)", unit="um")
+    mains = [fig.add_subplot(grid[0, col]) for col in (1, 2, 3)]  # fig.axes[1:4]
+    for ax, (case, text), k in zip(mains, CASES.items(), (2, 3, 4), strict=True):
         _panel(ax, errors, case, f"({k}) {text}", moving=moving)
         _published_marks(ax, [i for i in published if _panel_number(i) == (number, k)])
-        _difference_inset(ax, errors, case)
-    legend: dict[str, Any] = {}
-    for ax in axes.flat[1:]:
-        for handle, text in zip(*ax.get_legend_handles_labels(), strict=True):
-            legend.setdefault(text, handle)
-    fig.legend(
-        list(legend.values()), list(legend), loc="lower center", ncol=3, fontsize=9, frameon=False
-    )
+    for col, (ax, case) in enumerate(zip(mains, CASES, strict=True), 1):  # fig.axes[4:7]
+        _difference_panel(fig.add_subplot(grid[1, col], sharex=ax), errors, case)
+        ax.tick_params(labelbottom=False)  # the time axis is the difference panel's
+        ax.set_xlabel("")
+        ax.set_xticks([0, 3600, 7200])
     head = f"Fig. {number} (reproduced)" if number else "Figure"
-    fig.suptitle(f"{head}: position error, proposed scheme vs strapdown, {label}", fontsize=12)
-    fig.tight_layout(rect=(0, 0.08, 1, 0.96))
+    fig.suptitle(f"{head}: position error, proposed scheme vs strapdown, {label}")
+    legend = legend_below(fig, mains, ncol=3)
+    renderer = fig.canvas.get_renderer()
+    bottom = legend.get_window_extent(renderer).height / fig.bbox.height + 0.01
+    fig.tight_layout(rect=(0, bottom, 1, 1 - 0.2 / HEIGHT_IN), pad=0.3, w_pad=0.6, h_pad=0.3)
     return fig
 
 
-def _write(fig, png_path: Path) -> list[Path]:
-    try:
-        return write_png_svg(fig, png_path, DPI)
-    finally:
-        plt.close(fig)
+def _write(fig: Figure, png_path: Path) -> list[Path]:
+    return write_png_svg(fig, png_path, DPI)
 
 
 def run(

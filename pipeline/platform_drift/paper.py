@@ -24,8 +24,9 @@ CITATION = (
 _CURVES = (
     "position error of the proposed scheme (analytic eqs. 32/36 and nonlinear simulation) and "
     "of the strapdown INS. The simulated proposed curve is drawn on top, dashed with open "
-    "markers: with a channel-3 drift it lies on the strapdown curve, and the inset gives their "
-    "difference in metres. Dotted grey: the proposed scheme with the true azimuth rate in eq. 16 "
+    "markers: with a channel-3 drift it lies on the strapdown curve, and the panel below "
+    "(sim. − strapdown) gives their difference in metres on its own axis. Dotted grey: the "
+    "proposed scheme with the true azimuth rate in eq. 16 "
     "(the part of the error eqs. 33-36 model). Black diamond and dotted line: the 2 h strapdown "
     "error and the crossover time the paper's text gives for that panel "
     "(config/published/platform_drift.yaml)."

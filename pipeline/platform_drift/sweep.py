@@ -22,7 +22,13 @@ import pandas as pd  # noqa: E402
 
 from pipeline.atomic import write_csv  # noqa: E402
 from pipeline.figure_files import write_png_svg  # noqa: E402
-from pipeline.platform_drift.figures import DPI, STYLE  # noqa: E402
+from pipeline.platform_drift.figures_style import (  # noqa: E402
+    DPI,
+    RC,
+    STYLE,
+    WIDTH_IN,
+    legend_below,
+)
 from pipeline.platform_drift.run import simulate_errors  # noqa: E402
 from pipeline.platform_drift.scenario import load_scenario  # noqa: E402
 
@@ -54,26 +60,25 @@ def sweep(scenario: str | Path, latitudes=LATITUDES_DEG, log=print) -> pd.DataFr
 def plot(frame: pd.DataFrame, png_path: str | Path) -> list[Path]:
     """Fig. 9 (not in the paper) of the latitude sweep, written to ``png_path`` and the SVG
     beside it; returns both paths."""
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
-    titles = {"ch1": "channel-1 drift 0.01 deg/h", "ch3": "channel-3 drift 0.1 deg/h"}
-    for ax, case in zip(axes, CASES, strict=True):
-        for scheme, style in STYLE.items():
-            cur = frame[(frame["case"] == case) & (frame["scheme"] == scheme)]
-            if not cur.empty:
-                # one point per latitude: every point marked (the curves' own markevery is
-                # for 2 h time series)
-                points = {"marker": "o", "ms": 3, **style, "markevery": None}
-                ax.plot(cur["lat_deg"], cur["error_2h_m"] / 1000.0, **points)
-        ax.set_title(titles[case], fontsize=10)
-        ax.set_xlabel("latitude (deg)")
-        ax.set_ylabel("position error at 2 h (km)")
-        ax.grid(alpha=0.3)
-    handles, labels = axes[1].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=9, frameon=False)
-    fig.suptitle(
-        "Fig. 9 (not in the paper): error at 2 h against latitude, vehicle at rest", fontsize=12
-    )
-    fig.tight_layout(rect=(0, 0.08, 1, 0.94))
+    with matplotlib.rc_context(RC):
+        fig, axes = plt.subplots(1, 2, figsize=(WIDTH_IN, 2.6))
+        titles = {"ch1": "channel-1 drift 0.01 deg/h", "ch3": "channel-3 drift 0.1 deg/h"}
+        for ax, case in zip(axes, CASES, strict=True):
+            for scheme, style in STYLE.items():
+                cur = frame[(frame["case"] == case) & (frame["scheme"] == scheme)]
+                if not cur.empty:
+                    # one point per latitude: every point marked (the curves' own markevery
+                    # is for 2 h time series)
+                    points = {"marker": "o", "ms": 2.5, **style, "markevery": None}
+                    ax.plot(cur["lat_deg"], cur["error_2h_m"] / 1000.0, **points)
+            ax.set_title(titles[case])
+            ax.set_xlabel("latitude (deg)")
+            ax.set_ylabel("position error at 2 h (km)")
+            ax.grid(alpha=0.3)
+        legend = legend_below(fig, axes[1:], ncol=2)
+        fig.suptitle("Fig. 9 (not in the paper): error at 2 h against latitude, vehicle at rest")
+        bottom = legend.get_window_extent(fig.canvas.get_renderer()).height / fig.bbox.height
+        fig.tight_layout(rect=(0, bottom + 0.01, 1, 0.95), pad=0.3)
     try:
         return write_png_svg(fig, png_path, DPI)
     finally:

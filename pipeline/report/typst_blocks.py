@@ -2,7 +2,8 @@
 
 Tables fit the text width (small type, column widths from the content, rows break across
 pages with a repeated header); a verdict or status token is shown as its word in its colour;
-consecutive figures are set two abreast (the vector SVG beside a PNG when there is one); a link to
+figures are set at the width they were drawn, two abreast when both fit a column (the vector SVG
+beside a PNG when there is one); a link to
 a file beside the report names where the file is in the repository, as the PDF may travel
 alone; the equation audit is rendered by :mod:`pipeline.report.typst_equations`.
 """
@@ -14,6 +15,7 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
+from pipeline.figure_print import COLUMN_WIDTH_MM, GUTTER_MM, MM_PER_IN, svg_width_mm
 from pipeline.report.model import (
     Bullets,
     EquationTable,
@@ -26,27 +28,23 @@ from pipeline.report.model import (
 )
 from pipeline.report.typst_equations import EquationRenderer
 from pipeline.report.typst_source import (
-    FIGURE_HEIGHT_MM,
     TEXT_WIDTH_MM,
     breakable,
     column_widths,
     escape,
     image_size,
     is_number,
+    png_dpi,
     typst_array,
 )
 from pipeline.report.typst_symbols import typst_string
 from pipeline.report.vocabulary import MARK_WORDS, TOKENS, plain_words, tone, word
 
-__all__ = ["BlockRenderer", "walk"]
+__all__ = ["BlockRenderer", "drawn_width_mm", "placed_images", "walk"]
 
-#: a figure beside another: half the text width less the gutter, and at most this tall
-HALF_WIDTH_MM = 82.0
-HALF_HEIGHT_MM = 70.0
-#: a figure drawn on a canvas this wide (pixels; several panels) or twice as wide as tall is
-#: set alone at the text width, at most this tall
-WIDE_PIXELS = 1400
-WIDE_HEIGHT_MM = 98.0
+#: a figure drawn this much wider than a column (rounding of inches to mm) still goes beside
+#: another, at the column width
+WIDTH_SLACK_MM = 0.5
 
 
 def walk(sections: list[Section]) -> Iterator[Section]:
@@ -186,8 +184,9 @@ class BlockRenderer:
 
     # ---- figures --------------------------------------------------------------------------
     def figures(self, figs: list[Figure]) -> str:
-        """Figures two abreast; a wide one (several panels on a wide canvas) alone at the full
-        width, and so is one left without a partner."""
+        """Figures at the width they were drawn (:func:`drawn_width_mm`), at most the text
+        width: two drawn no wider than a column (:data:`COLUMN_WIDTH_MM`) side by side, a
+        wider one alone, and so is one left without a partner."""
         out: list[str] = []
         pair: list[Figure] = []
 
@@ -195,16 +194,17 @@ class BlockRenderer:
             if len(pair) == 1:
                 out.append(self.figure(pair[0]))
             elif pair:
-                cells = ", ".join(
-                    f"[{self.figure(f, HALF_WIDTH_MM, HALF_HEIGHT_MM)}]" for f in pair
+                cells = ", ".join(f"[{self.figure(f, COLUMN_WIDTH_MM)}]" for f in pair)
+                out.append(
+                    f"#grid(columns: (1fr, 1fr), column-gutter: {GUTTER_MM:g}mm, "
+                    f"align: center + top, {cells})"
                 )
-                out.append(f"#grid(columns: (1fr, 1fr), column-gutter: 5mm, {cells})")
             pair.clear()
 
         for f in figs:
-            if self._wide(f):
+            if self._drawn(f) > COLUMN_WIDTH_MM + WIDTH_SLACK_MM:
                 flush()
-                out.append(self.figure(f, TEXT_WIDTH_MM, WIDE_HEIGHT_MM))
+                out.append(self.figure(f))
                 continue
             pair.append(f)
             if len(pair) == 2:
@@ -212,24 +212,18 @@ class BlockRenderer:
         flush()
         return "\n".join(out)
 
-    def _wide(self, fig: Figure) -> bool:
+    def _path(self, fig: Figure) -> Path:
         path = Path(fig.path)
-        size = image_size(path if path.is_absolute() else self.root / path)
-        return size is not None and (size[0] >= WIDE_PIXELS or size[0] >= 2 * size[1])
+        return path if path.is_absolute() else self.root / path
 
-    def figure(
-        self, fig: Figure, max_width: float = TEXT_WIDTH_MM, max_height: float = FIGURE_HEIGHT_MM
-    ) -> str:
-        path = Path(fig.path)
-        if not path.is_absolute():
-            path = self.root / path
+    def _drawn(self, fig: Figure) -> float:
+        return drawn_width_mm(self._path(fig))
+
+    def figure(self, fig: Figure, max_width: float = TEXT_WIDTH_MM) -> str:
+        path = self._path(fig)
         svg = path.with_suffix(".svg")
         shown = svg if svg.is_file() else path
-        width = max_width
-        size = image_size(path)
-        if size is not None:
-            w, h = size
-            width = min(max_width, max_height * w / h)
+        width = min(max_width, self._drawn(fig))
         try:
             rel = "/" + shown.resolve().relative_to(self.root.resolve()).as_posix()
         except ValueError:
@@ -243,3 +237,25 @@ class BlockRenderer:
             f"#figure(image({typst_string(rel)}, width: {width:.1f}mm), numbering: none, "
             f"caption: [{caption}])"
         )
+
+
+#: ``image("<path>", width: <w>mm)`` as :meth:`BlockRenderer.figure` writes it
+_IMAGE = re.compile(r'image\("(/[^"]+)", width: ([\d.]+)mm\)')
+
+
+def placed_images(source: str) -> list[tuple[str, float]]:
+    """(path relative to the compile root, width in mm) of every image a Typst source of
+    :class:`BlockRenderer` places, in order."""
+    return [(m.group(1).lstrip("/"), float(m.group(2))) for m in _IMAGE.finditer(source)]
+
+
+def drawn_width_mm(path: Path) -> float:
+    """The width a figure was drawn at, in mm: its SVG's (the file or the one beside it), else
+    a PNG's pixels over its resolution (pHYs), else the text width."""
+    svg = path.with_suffix(".svg")
+    if svg.is_file():
+        return svg_width_mm(svg.read_bytes())
+    size, dpi = image_size(path), png_dpi(path)
+    if size is None or dpi is None:
+        return TEXT_WIDTH_MM
+    return size[0] / dpi * MM_PER_IN

@@ -47,6 +47,7 @@ from pipeline.altimeter_attitude.maneuvers import maneuver_intervals
 from pipeline.altimeter_attitude.published_rms import published_rms
 from pipeline.altimeter_attitude.workflow import FIGURES
 from pipeline.config import load_yaml
+from pipeline.figure_print import COLUMN_WIDTH_IN, MIN_TEXT_PT, TEXT_WIDTH_IN
 
 ROOT = Path(__file__).resolve().parents[2]
 PUBLISHED = {
@@ -196,7 +197,15 @@ def _check_common(fig, number: str) -> None:
     for ax in fig.axes:
         assert ax.xaxis.get_gridlines()[0].get_visible()
     assert fig.legends, "every figure has a legend"
-    small = [(t.get_text(), t.get_fontsize()) for t in _texts(fig) if t.get_fontsize() < 9]
+    _check_print_size(fig)
+
+
+def _check_print_size(fig) -> None:
+    """Drawn at a print width of the PDF report, every text at least MIN_TEXT_PT there."""
+    assert fig.get_figwidth() in (COLUMN_WIDTH_IN, TEXT_WIDTH_IN), fig.get_figwidth()
+    small = [
+        (t.get_text(), t.get_fontsize()) for t in _texts(fig) if t.get_fontsize() < MIN_TEXT_PT
+    ]
     assert not small, small
 
 
@@ -214,7 +223,8 @@ def test_write_all_writes_valid_non_blank_pngs(written):
     for path in written[0::2]:
         assert path.is_file()
         img = mpimg.imread(path)
-        assert img.ndim == 3 and img.shape[0] >= 500 and img.shape[1] >= 1000, (path, img.shape)
+        # drawn a column (3.2 in) wide at 200 dpi: at least 600 px for the HTML pages
+        assert img.ndim == 3 and img.shape[0] >= 500 and img.shape[1] >= 600, (path, img.shape)
         assert float(img[..., :3].std()) > 0.05, path
     assert not list(written[0].parent.glob(".*.tmp")), "no temporary files left"
 
@@ -428,8 +438,8 @@ def test_sweep_figure_maps_the_sweep_rows(tmp_path):
         published = [ln.get_ydata()[0] for ln in ax.lines if "published" in ln.get_label()]
         assert sorted(published) == [0.07, 0.10, 0.16, 0.21]
     assert "25 Monte Carlo runs" in " ".join(t.get_text() for t in fig.texts)
-    small = [(t.get_text(), t.get_fontsize()) for t in _texts(fig) if t.get_fontsize() < 9]
-    assert not small
+    _check_print_size(fig)
+    assert fig.get_figwidth() == TEXT_WIDTH_IN  # panels side by side: alone at the text width
     csv = tmp_path / "sweep.csv"
     frame.to_csv(csv, index=False)
     a = write_sweep(csv, tmp_path / "a" / "fig_sweep.png", PUBLISHED)

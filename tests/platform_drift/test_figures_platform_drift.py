@@ -41,7 +41,7 @@ def test_published_values_overlaid_on_their_panel(tmp_path):
         assert len(panel4) == 1 and np.allclose(panel4[0].get_xdata(), [2400.0, 2400.0])
         for ax in (axes[0], axes[1]):
             assert not [ln for ln in ax.lines if ln.get_label().startswith("published")]
-        legend = [t.get_text() for t in fig.legends[0].get_texts()]
+        legend = [" ".join(t.get_text().split()) for t in fig.legends[0].get_texts()]
         assert "published 2 h error (paper's text)" in legend
         assert "published crossover (paper's text)" in legend
     finally:
@@ -60,7 +60,8 @@ def test_no_published_values_no_marks(tmp_path):
 
 def test_simulated_curve_drawn_visibly_on_the_strapdown_one(tmp_path):
     """The finding must be visible: the simulated proposed curve is drawn after (on top of) the
-    strapdown one, dashed with markers, in its own colour; an inset gives their difference (m)."""
+    strapdown one, dashed with markers, in its own colour; a panel below each gives their
+    difference (m) on its own axis, sharing the time axis."""
     _errors(tmp_path)
     fig = plot_scenario("stationary", tmp_path, None)
     try:
@@ -71,14 +72,16 @@ def test_simulated_curve_drawn_visibly_on_the_strapdown_one(tmp_path):
             assert ax.lines.index(sim) > ax.lines.index(strap)
             assert sim.get_linestyle() == "--" and sim.get_marker() == "o"
             assert sim.get_color() != strap.get_color()
-            assert ax.get_ylabel() == "position error (km)" and ax.get_xlabel() == "time (s)"
-            (inset,) = ax.child_axes
-            assert inset.get_title().endswith("strapdown (m)")
-            diff = inset.lines[-1].get_ydata()
-            t = inset.lines[-1].get_xdata()
+            assert ax.get_ylabel() == "error (km)"
+        for ax, below in zip(fig.axes[1:4], fig.axes[4:7], strict=True):
+            assert below.get_shared_x_axes().joined(ax, below)
+            assert below.get_title() == "sim. − strapdown"
+            assert below.get_ylabel() == "difference (m)" and below.get_xlabel() == "time (s)"
+            diff = below.lines[-1].get_ydata()
+            t = below.lines[-1].get_xdata()
             k_sim, k_strap = (list(STYLE).index(s) + 1 for s in ("proposed_simulated", "strapdown"))
             np.testing.assert_allclose(diff, (k_sim - k_strap) * t)  # simulated - strapdown, m
-        assert fig.axes[0].get_ylabel() == "position error (µm)"
+        assert fig.axes[0].get_ylabel() == "error (µm)"
         assert "Fig. 5 (reproduced)" in fig._suptitle.get_text()
     finally:
         plt.close(fig)
