@@ -25,7 +25,7 @@ __all__ = [
     "VALUE_WORDS",
     "group_counts",
     "headline_blocks",
-    "steady_blocks",
+    "after_bank_blocks",
     "summary_blocks",
 ]
 
@@ -183,23 +183,23 @@ def _headline(
     return blocks
 
 
-def steady_blocks(windows: pd.DataFrame | None) -> list[Block]:
-    """The steady-window statistics of one scenario (window_summary.csv)."""
+def after_bank_blocks(windows: pd.DataFrame | None) -> list[Block]:
+    """The statistics of the window after the first bank of one scenario (window_summary.csv)."""
     if windows is None:
         return []
-    steady = windows[windows["window"] == "steady"]
-    if steady.empty:
+    after = windows[windows["window"] == "after_bank"]
+    if after.empty:
         return []
-    start, end = float(steady["t_start_s"].iloc[0]), float(steady["t_end_s"].iloc[0])
+    start, end = float(after["t_start_s"].iloc[0]), float(after["t_end_s"].iloc[0])
     if pd.isna(start):
-        return [Paragraph("Steady window: none (no bank of the set roll ends before the end).")]
+        return [Paragraph("After-bank window: none (no bank of the set roll ends before the end).")]
     cols = list(RMS_SUMMARY_COLUMNS)
-    s = steady[cols].set_index("filter").reindex(filter_order(list(steady["filter"])))
+    s = after[cols].set_index("filter").reindex(filter_order(list(after["filter"])))
     fmts = {c: fmt3 for c in cols if c not in ("filter", "n_runs")}
     fmts["n_runs"] = lambda x: DASH if pd.isna(x) else str(int(x))
     return [
         Paragraph(
-            f"Steady window {start:.5g}-{end:.5g} s (from the end of the first bank that makes "
+            f"After-bank window {start:.5g}-{end:.5g} s (from the end of the first bank that makes "
             "roll observable; window_summary.csv):"
         ),
         frame_table(s.reset_index(), formatters=fmts),
