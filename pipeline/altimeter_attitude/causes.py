@@ -165,6 +165,16 @@ def _rms_cause(res) -> Cause:
                 else ""
             )
         )
+        ran = _tuned(res)
+        ukf_items = [(q, pub) for f, q, pub in items if f == "ukf"]
+        if ran is not None and ukf_items:
+            clauses.append(
+                f"over the {len(ran)} sigma-point settings of ukf_tuning.csv the UKF's RMS over "
+                "the flight gives "
+                + "; ".join(
+                    f"{q.split('_')[0]} {range_clause(pub, ran[q], 3)[1]}" for q, pub in ukf_items
+                )
+            )
         if rates:
             clauses.append(
                 f"our RMS after the first bank falls as (IMU rate)^-b with b = {span(exponents)} and would "

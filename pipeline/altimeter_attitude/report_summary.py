@@ -13,7 +13,7 @@ from typing import Any
 
 import pandas as pd
 
-from pipeline.altimeter_attitude.columns import RMS_SUMMARY_COLUMNS, WINDOWS
+from pipeline.altimeter_attitude.columns import RMS_SUMMARY_COLUMNS, WINDOW_LABELS, WINDOWS
 from pipeline.altimeter_attitude.filter_comparison import ANGLES
 from pipeline.altimeter_attitude.report_findings import DASH, filter_order, fmt3, fmt_ratio
 from pipeline.columns import AUDIT_STATUSES
@@ -91,9 +91,11 @@ def _window_text(windows: pd.DataFrame | None) -> str:
         rows = windows[windows["window"] == w]
         if len(rows) and math.isfinite(float(rows.iloc[0]["t_start_s"])):
             r = rows.iloc[0]
-            parts.append(f"{w} {float(r['t_start_s']):.5g}-{float(r['t_end_s']):.5g} s")
+            parts.append(
+                f"{WINDOW_LABELS[w]} {float(r['t_start_s']):.5g}-{float(r['t_end_s']):.5g} s"
+            )
         elif len(rows):
-            parts.append(f"{w}: none in this scenario")
+            parts.append(f"{WINDOW_LABELS[w]}: none in this scenario")
     return " Windows (window_summary.csv): " + ", ".join(parts) + "." if parts else ""
 
 
@@ -143,7 +145,7 @@ def _headline(
         ratios = [float(by_q.at[q, "ours / published"]) for q in qs]
         ratio = "–".join(dict.fromkeys(fmt_ratio(x, 1) for x in (min(ratios), max(ratios))))
         parts.append(
-            f"{filt} {names} RMS over the {window} window {ours} deg (paper: {pub} deg; ours is "
+            f"{filt} {names} RMS over the {WINDOW_LABELS[window]} {ours} deg (paper: {pub} deg; ours is "
             f"{ratio} times the paper's)"
         )
     text = (

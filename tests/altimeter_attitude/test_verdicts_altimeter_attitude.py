@@ -214,6 +214,14 @@ def test_unpublished_cause_is_shared_and_computed(published, tmp_path):
     # the sweep's after-bank RMS is s (50 / rate)^0.5: it reaches the published p at 50 (s / p)^2
     rates = [50 * (s / p) ** 2 for s, p in ((0.4, 0.16), (0.2, 0.07), (0.5, 0.21), (0.25, 0.1))]
     assert "b = 0.50" in text and f"near {min(rates):.0f}-{max(rates):.0f} Hz" in text
+    # with the UKF tuning grid (pitch 0.2 at both settings): the paper's 0.1 lies outside
+    tuned = judge(published, d, 10.0, tuning=_tuning(tmp_path, (0.18, 0.17)))
+    text = tuned[tuned["verdict"] == "not_reproduced"]["cause_detail"].iloc[0]
+    assert "sigma-point settings of ukf_tuning.csv the UKF's RMS over the flight gives" in text
+    assert "pitch 0.1 outside [0.200, 0.200] deg" in text and "roll 0.21 outside" in text
+    inside = judge(published, d, 10.0, tuning=_tuning(tmp_path, (0.18, 0.17), pitch=(0.05, 0.2)))
+    text = inside[inside["verdict"] == "not_reproduced"]["cause_detail"].iloc[0]
+    assert "pitch 0.1 inside [0.050, 0.200] deg" in text
     # without the sweep the cause keeps the window evidence only
     bare = judge(published, d, 10.0, sweep=False)
     assert "sweep" not in bare[bare["verdict"] == "not_reproduced"]["cause_detail"].iloc[0]
