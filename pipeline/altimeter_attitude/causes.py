@@ -12,7 +12,8 @@ in a text is formatted from the results. The engine writes a cause only on a fai
 * :func:`level_flight_cause` (``model``): a roll sigma too large mostly in wings-level
   flight, where the altimeter sees roll only to second order;
 * :func:`bias_cause` (``model``): a sigma too small for an error that is mostly the filter's
-  own bias (its noise-free RMS);
+  own bias (its noise-free RMS); for the UKF with what its tuning grid (ukf_tuning.csv) and
+  the EKF on the same model show about where that bias comes from;
 * :func:`ekf_cause` (``unpublished``): an EKF that does not diverge, where the paper gives none
   of its EKF's settings.
 """
@@ -36,7 +37,9 @@ __all__ = [
     "rate_trend",
     "ranking_cause",
     "rms_cause",
+    "range_clause",
     "span",
+    "tuning_clause",
 ]
 
 ANGLES = ("roll", "pitch")
@@ -80,6 +83,30 @@ def rate_trend(rates: Sequence[float], rms: Sequence[float]) -> tuple[float, flo
     return float(slope), float(intercept)
 
 
+def range_clause(published: float, values: Iterable[float], digits: int = 2) -> tuple[bool, str]:
+    """Whether ``published`` lies inside ``[min, max]`` of the finite ``values``, and that said
+    plainly (bounds at ``digits`` decimals; the comparison uses the unrounded values).
+
+    >>> range_clause(0.16, [0.45, 1.8, 0.9])
+    (False, '0.16 outside [0.45, 1.80] deg')
+    >>> range_clause(0.5, [0.45, 1.8])
+    (True, '0.5 inside [0.45, 1.80] deg')
+    >>> range_clause(0.5, [float("nan")])
+    (False, '0.5: no finite value')
+    """
+    xs = [float(x) for x in values if math.isfinite(float(x))]
+    if not xs:
+        return False, f"{published:g}: no finite value"
+    lo, hi = min(xs), max(xs)
+    inside = lo <= published <= hi
+    where = "inside" if inside else "outside"
+    return inside, f"{published:g} {where} [{lo:.{digits}f}, {hi:.{digits}f}] deg"
+
+
+#: a window's name inside a cause's parentheses
+_SHORT = {"flight": "flight", "after_bank": "after the first bank"}
+
+
 def _sweep_column(quantity: str, window: str) -> str:
     return quantity if window == "flight" else f"{window}_{quantity}"
 
@@ -96,33 +123,30 @@ def _rms_cause(res) -> Cause:
         if i.get("quantity") in ("roll_rms_deg", "pitch_rms_deg")
     ]
     ours = {(f, q, w): float(res.window(f, w)[q]) for f, q, _ in items for w in WINDOWS}
-    shifts = [abs(ours[(f, q, "flight")] - ours[(f, q, "steady")]) for f, q, _ in items]
+    shifts = [abs(ours[(f, q, "flight")] - ours[(f, q, "after_bank")]) for f, q, _ in items]
     clauses = [
-        f"the window alone (the flight after {res.transient:g} s or the steady state after the "
+        f"the window alone (the flight after {res.transient:g} s or the window after the "
         f"first bank) changes our {len(items)} values by {span(shifts)} deg"
     ]
     sweep = res.sweep
     if sweep is not None and len(sweep):
-        moves = {w: [] for w in WINDOWS}
-        gaps = {w: [] for w in WINDOWS}
-        covered = total = 0
+        found: list[str] = []
+        inside = total = 0
         rates: list[float] = []
         exponents: list[float] = []
         for f, q, pub in items:
             rows = sweep[sweep["filter"] == f]
             for w in WINDOWS:
                 col = _sweep_column(q, w)
-                vals = rows[col].dropna() if col in rows else rows.iloc[0:0][q]
-                gap = abs(ours[(f, q, w)] - pub)
-                if not len(vals) or not math.isfinite(gap):
+                vals = list(rows[col].dropna()) if col in rows else []
+                if not vals:
                     continue
-                move = float(vals.max() - vals.min())
-                moves[w].append(move)
-                gaps[w].append(gap)
+                hit, clause = range_clause(pub, vals)
                 total += 1
-                covered += move >= gap
+                inside += hit
+                found.append(f"{f} {q.split('_')[0]} {_SHORT[w]}: {clause}")
             by_rate = rows[rows["parameter"] == RATE]
-            col = _sweep_column(q, "steady")
+            col = _sweep_column(q, "after_bank")
             if col in by_rate:
                 fit = rate_trend(list(by_rate["value"]), list(by_rate[col]))
                 if fit is not None and fit[0] < 0:
@@ -131,14 +155,29 @@ def _rms_cause(res) -> Cause:
         params = ", ".join(dict.fromkeys(sweep["parameter"]))
         runs = ", ".join(str(int(n)) for n in sorted(set(sweep["n_runs"])))
         clauses.append(
-            f"over the sweep of {params} ({runs} runs a point) each value moves by "
-            f"{span(moves['flight'])} deg over the flight and {span(moves['steady'])} deg in the "
-            f"steady window, against gaps to the published values of {span(gaps['flight'])} "
-            f"and {span(gaps['steady'])} deg ({covered} of {total} moves exceed their gap)"
+            f"the paper's value lies inside the range our sweep of the unpublished {params} "
+            f"({runs} runs a point, one at a time) spans in {inside} of {total} cases ("
+            + "; ".join(found)
+            + ")"
+            + (
+                ", so no one of these choices moved alone over our range reaches them"
+                if inside == 0
+                else ""
+            )
         )
+        ran = _tuned(res)
+        ukf_items = [(q, pub) for f, q, pub in items if f == "ukf"]
+        if ran is not None and ukf_items:
+            clauses.append(
+                f"over the {len(ran)} sigma-point settings of ukf_tuning.csv the UKF's RMS over "
+                "the flight gives "
+                + "; ".join(
+                    f"{q.split('_')[0]} {range_clause(pub, ran[q], 3)[1]}" for q, pub in ukf_items
+                )
+            )
         if rates:
             clauses.append(
-                f"our steady RMS falls as (IMU rate)^-b with b = {span(exponents)} and would "
+                f"our RMS after the first bank falls as (IMU rate)^-b with b = {span(exponents)} and would "
                 f"reach the published values near {span(rates, 0)} Hz if that trend held"
             )
     text = (
@@ -163,8 +202,8 @@ def _ranking_cause(res, filt: str, ref: str) -> Cause:
         )
 
     parts = [f"roll/pitch RMS over the flight {pair('flight')}"]
-    if math.isfinite(float(res.window(filt, "steady")["t_start_s"])):
-        parts.append(f"in the steady window {pair('steady')}")
+    if math.isfinite(float(res.window(filt, "after_bank")["t_start_s"])):
+        parts.append(f"in the window after the first bank {pair('after_bank')}")
     sweep = res.sweep
     if sweep is not None and {filt, ref} <= set(sweep["filter"]):
         mine = sweep[sweep["filter"] == filt].set_index(["parameter", "value"])
@@ -177,12 +216,14 @@ def _ranking_cause(res, filt: str, ref: str) -> Cause:
                 if col not in sweep:
                     continue
                 wins = int((mine.loc[points, col] < theirs.loc[points, col]).sum())
-                counts.append(f"{wins} for {a} ({w})")
+                counts.append(f"{wins} for {a} ({_SHORT[w]})")
         parts.append(
             f"{filt} has the lower RMS at "
             + ", ".join(counts)
             + f" of the {len(points)} (parameter, value) points of the sweep"
         )
+    if "ukf" in (filt, ref) and tuning_spans(res):
+        parts.append(tuning_spans(res))
     text = (
         "The paper gives no setting of its UKF (scaling, noise handling, integration) and not "
         "its trajectory, and with ours the ranking does not hold: " + "; ".join(parts) + "."
@@ -207,8 +248,8 @@ def _level_flight_cause(res, checks: Sequence[NeesCheck]) -> Cause | None:
     shares = ", ".join(
         f"{c.filter} {c.below_level:.0%} of {round(c.below * c.n_times)}" for c in checks
     )
-    steady = ", ".join(f"{c.filter} {c.steady_mean:.2f}" for c in checks)
-    inside = all(lo <= c.steady_mean <= hi for c in checks)
+    after = ", ".join(f"{c.filter} {c.after_bank_mean:.2f}" for c in checks)
+    inside = all(lo <= c.after_bank_mean <= hi for c in checks)
     return Cause(
         "model",
         "roll is barely observable in our wings-level flight",
@@ -216,8 +257,8 @@ def _level_flight_cause(res, checks: Sequence[NeesCheck]) -> Cause | None:
         f"where roll reaches the altimeter only to second order (through c3 = cos(roll) "
         f"cos(pitch)): of the times after the transient with the roll NEES below the band "
         f"[{lo:.2f}, {hi:.2f}], {shares} have a true "
-        f"|roll| below {res.bank_deg:g} deg, and the roll NEES of the steady window after the "
-        f"first bank is {steady}, {'inside' if inside else 'not all inside'} the band.",
+        f"|roll| below {res.bank_deg:g} deg, and the roll NEES of the window after the "
+        f"first bank is {after}, {'inside' if inside else 'not all inside'} the band.",
     )
 
 
@@ -237,14 +278,80 @@ def _bias_cause(res, check: NeesCheck) -> Cause | None:
     if not (mc > 0 and nf >= 0.5 * mc):
         return None
     lo, hi = check.band
-    return Cause(
-        "model",
-        "the filter's error is mostly a bias outside its sigma",
-        f"The {check.filter}'s {check.angle} error is mostly a bias of its own prediction, "
-        f"which its sigma does not contain: on one noise-free run with an exact start its "
-        f"{check.angle} RMS is {nf:.3f} deg, {nf / mc:.0%} of its Monte Carlo {mc:.3f} deg, and "
-        f"its {check.angle} NEES is above the band [{lo:.2f}, {hi:.2f}] at {check.above:.0%} "
-        f"of the times after the transient (up to {check.peak:.2f} at {check.peak_t:g} s).",
+    text = (
+        f"The {check.filter}'s {check.angle} error is mostly a deterministic bias of its own "
+        f"prediction, which its sigma does not contain: on one noise-free run with an exact "
+        f"start its {check.angle} RMS is {nf:.3f} deg, {nf / mc:.0%} of its Monte Carlo "
+        f"{mc:.3f} deg, and its {check.angle} NEES is above the band [{lo:.2f}, {hi:.2f}] at "
+        f"{check.above:.0%} of the times after the transient (up to {check.peak:.2f} at "
+        f"{check.peak_t:g} s)"
+    )
+    title = "the filter's error is mostly a bias outside its sigma"
+    if check.filter == "ukf":
+        not_tuning, clause = tuning_clause(res, check.angle)
+        text += clause
+        if not_tuning:
+            title = "the UKF's own prediction bias, not its sigma-point tuning"
+    if "ekf" in res.noise_free.index and check.filter == "ukf":
+        ekf = float(res.noise_free.loc["ekf", q])
+        where = (
+            "so the bias is in the unscented prediction's mean itself (the second-order term "
+            "that any symmetric sigma-point set carries), not in the model"
+            if ekf < 0.5 * nf
+            else "so the model carries the bias too"
+        )
+        text += (
+            f"; the EKF on the same Euler-angle model, integration and noise-free data has "
+            f"{ekf:.3f} deg, {where}"
+        )
+    return Cause("model", title, text + ".")
+
+
+def _tuned(res):
+    """The settings of the UKF tuning grid that ran (None without at least two)."""
+    tuning = getattr(res, "tuning", None)
+    if tuning is None:
+        return None
+    ran = tuning[tuning["status"] == "ok"]
+    return ran if len(ran) >= 2 else None
+
+
+def tuning_clause(res, angle: str) -> tuple[bool, str]:
+    """What the UKF tuning grid (ukf_tuning.csv) shows about the UKF's ``angle`` bias: whether
+    every setting keeps the noise-free RMS at least half the Monte Carlo one (the rule of
+    :func:`bias_cause`; then the bias is not the tuning), and the spans; (False, '') without
+    the grid."""
+    ran = _tuned(res)
+    if ran is None:
+        return False, ""
+    nf = ran[f"noise_free_{angle}_rms_deg"]
+    mc = ran[f"{angle}_rms_deg"]
+    w0 = ran["wm0"]
+    alphas = ", ".join(f"{a:g}" for a in dict.fromkeys(ran["alpha"]))
+    kappas = ", ".join(f"{k:g}" for k in dict.fromkeys(ran["kappa"]))
+    kept = int((nf >= 0.5 * mc).sum())
+    lead = (
+        f"it is not the sigma-point tuning: all {len(ran)} settings"
+        if kept == len(ran)
+        else f"the sigma-point tuning matters: {kept} of {len(ran)} settings"
+    )
+    return kept == len(ran), (
+        f"; {lead} of the grid (alpha {alphas}; kappa {kappas}; centre weight W0 from "
+        f"{w0.min():.3g} to {w0.max():.3g}) keep the noise-free {angle} RMS at least half the "
+        f"Monte Carlo one; the noise-free RMS spans [{nf.min():.3f}, {nf.max():.3f}] deg and "
+        f"the Monte Carlo one [{mc.min():.3f}, {mc.max():.3f}] deg (ukf_tuning.csv)"
+    )
+
+
+def tuning_spans(res) -> str:
+    """The UKF's Monte Carlo roll/pitch RMS spans over the tuning grid; '' without it."""
+    ran = _tuned(res)
+    if ran is None:
+        return ""
+    r, p = ran["roll_rms_deg"], ran["pitch_rms_deg"]
+    return (
+        f"over the {len(ran)} sigma-point settings of ukf_tuning.csv the UKF's roll/pitch RMS "
+        f"over the flight spans [{r.min():.3f}, {r.max():.3f}]/[{p.min():.3f}, {p.max():.3f}] deg"
     )
 
 

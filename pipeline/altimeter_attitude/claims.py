@@ -37,7 +37,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.altimeter_attitude import causes
-from pipeline.altimeter_attitude.columns import ALTIMETER_FILTERS, WINDOWS
+from pipeline.altimeter_attitude.columns import ALTIMETER_FILTERS, WINDOW_LABELS, WINDOWS
 from pipeline.altimeter_attitude.consistency import DIRECTIONS, NeesCheck, nees_check
 from pipeline.altimeter_attitude.quantities import ANGLES, ScenarioResults
 from pipeline.verdicts.cause import Cause
@@ -119,7 +119,7 @@ def less_rms(args: Mapping[str, Any], res: ScenarioResults) -> list[ClaimResult]
         start = float(res.window(filt, window)["t_start_s"])
         tol = f"both angles smaller with a paired one-sided p < {args['alpha']}"
         if not math.isfinite(start):
-            why = f"the scenario has no {window} window"
+            why = f"the scenario has no {WINDOW_LABELS[window]}"
             out.append(
                 ClaimResult(
                     "not_checkable",
@@ -140,8 +140,9 @@ def less_rms(args: Mapping[str, Any], res: ScenarioResults) -> list[ClaimResult]
             ok &= rx < ry and p < args["alpha"]
             parts.append(f"{a}: {rx:.3f} vs {ry:.3f} deg (paired one-sided p = {p:.2g})")
         end = float(res.window(filt, window)["t_end_s"])
-        text = f"{filt} vs {ref} over the {window} window {start:.5g}-{end:.5g} s: " + "; ".join(
-            parts
+        text = (
+            f"{filt} vs {ref} over the {WINDOW_LABELS[window]} {start:.5g}-{end:.5g} s: "
+            + "; ".join(parts)
         )
         why = (
             "both angles smaller and significant" if ok else "not both angles smaller at that level"
@@ -204,7 +205,7 @@ def nees_consistent(args: Mapping[str, Any], res: ScenarioResults) -> list[Claim
         text = (
             f"NEES {a}: flight mean {c.mean:.2f}; at {c.above:.0%} of {c.n_times} times above "
             f"the band (over-confident), at {c.below:.0%} below it (under-confident); "
-            f"steady-window mean {c.steady_mean:.2f}"
+            f"after-bank mean {c.after_bank_mean:.2f}"
         )
         tol = (
             f"chi-square band of a mean over {c.n_runs} runs, {p:.0%} two-sided: "

@@ -29,9 +29,12 @@ ALTIMETER_FILTERS = (
 RUN_RMS_COLUMNS = ["run", "filter", "roll_rms_deg", "pitch_rms_deg"]
 # results/<slug>/<scenario>/window_summary.csv: the rms_summary.csv statistics over each
 # averaging window (pipeline/altimeter_attitude/windows.py): "flight" (after the transient, as
-# rms_summary.csv) and "steady" (after the first bank that makes roll observable); start and
+# rms_summary.csv) and "after_bank" (after the first bank that makes roll observable); start and
 # end in s, NaN statistics when the scenario has no such window
-WINDOWS = ("flight", "steady")
+WINDOWS = ("flight", "after_bank")
+#: how the report names each window (the after-bank window is no steady state: it starts
+#: where the first bank ends and runs to the end of the flight)
+WINDOW_LABELS = {"flight": "flight window", "after_bank": "window after the first bank"}
 WINDOW_SUMMARY_COLUMNS = ["window", "t_start_s", "t_end_s", *RMS_SUMMARY_COLUMNS]
 # results/<slug>/<scenario>/window_run_rms.csv: run_rms.csv over each averaging window
 WINDOW_RUN_RMS_COLUMNS = ["window", *RUN_RMS_COLUMNS]
@@ -73,7 +76,7 @@ TRUTH_COLUMNS = [
     "altimeter_m",
 ]
 # results/<slug>/sweep.csv: one-at-a-time sweep around the paper scenario; the RMS over the
-# flight after the transient, then (added later, at the end) over the steady window and its start
+# flight after the transient, then (added later, at the end) over the window after the first bank and its start
 SWEEP_COLUMNS = [
     "parameter",
     "value",
@@ -81,9 +84,29 @@ SWEEP_COLUMNS = [
     "roll_rms_deg",
     "pitch_rms_deg",
     "n_runs",
-    "steady_roll_rms_deg",
-    "steady_pitch_rms_deg",
-    "steady_start_s",
+    "after_bank_roll_rms_deg",
+    "after_bank_pitch_rms_deg",
+    "after_bank_start_s",
+]
+# results/<slug>/<published scenario>/ukf_tuning.csv: the UKF over a grid of its sigma-point
+# parameters (pipeline/altimeter_attitude/ukf_tuning.py), RMS over runs and over the flight
+# after the transient, Monte Carlo and the noise-free run with an exact start
+UKF_TUNING_COLUMNS = [
+    "alpha",
+    "kappa",
+    "beta",
+    "wm0",
+    "wc0",
+    "nonnegative_weights",
+    "chosen",
+    "roll_rms_deg",
+    "pitch_rms_deg",
+    "nees_roll",
+    "nees_pitch",
+    "noise_free_roll_rms_deg",
+    "noise_free_pitch_rms_deg",
+    "n_runs",
+    "status",
 ]
 # flight-log CLI output: estimated attitude per IMU sample
 FLIGHTLOG_OUTPUT_COLUMNS = [

@@ -53,7 +53,7 @@ def classify(
 class NeesCheck:
     """The NEES of one filter and angle against its band (fractions of the times after the
     transient; ``*_level``: of those outside the band, the share with true |roll| below the
-    bank that opens the steady window; ``steady_mean``: flight-mean NEES of the steady
+    bank that opens the window after the first bank; ``after_bank_mean``: mean NEES of the window after the first bank
     window, NaN without one)."""
 
     filter: str
@@ -70,7 +70,7 @@ class NeesCheck:
     peak_t: float
     above_level: float
     below_level: float
-    steady_mean: float
+    after_bank_mean: float
 
     @property
     def ok(self) -> bool:
@@ -92,7 +92,7 @@ def nees_check(res, filt: str, angle: str, p: float, max_outside: float) -> Nees
         return float(np.mean(level[mask])) if mask.any() else float("nan")
 
     i = int(np.nanargmax(values)) if len(values) else 0
-    steady = res.window(filt, "steady")
+    after = res.window(filt, "after_bank")
     above, below = float(np.mean(above_mask)), float(np.mean(below_mask))
     return NeesCheck(
         filter=filt,
@@ -109,5 +109,5 @@ def nees_check(res, filt: str, angle: str, p: float, max_outside: float) -> Nees
         peak_t=float(curve.index[i]) if len(values) else float("nan"),
         above_level=share(above_mask),
         below_level=share(below_mask),
-        steady_mean=float(steady[f"nees_{angle}"]),
+        after_bank_mean=float(after[f"nees_{angle}"]),
     )

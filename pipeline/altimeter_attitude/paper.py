@@ -115,6 +115,17 @@ STEPS = (
         report={"sweep": ("Sweep", "sweep")},
     ),
     Step(
+        "ukf_tuning",
+        "pipeline.altimeter_attitude.ukf_tuning:tuning_step",
+        inputs=lambda ctx: {
+            **ctx.run_inputs(
+                ctx.scenario_file(ctx.settings["published_scenario"]), SCENARIO_SCHEMA
+            ),
+        },
+        outputs=lambda ctx: {"ukf_tuning": _published(ctx, "ukf_tuning.csv")},
+        params=lambda ctx: {"ukf_tuning": dict(ctx.settings["ukf_tuning"])},
+    ),
+    Step(
         "verdicts",
         "pipeline.altimeter_attitude.steps:verdicts",
         inputs=lambda ctx: {
@@ -123,6 +134,7 @@ STEPS = (
             "scenario_schema": SCENARIO_SCHEMA,
             "results": [_published(ctx, f"{n}.csv") for n in RESULT_CSVS],
             "sweep": f"{ctx.results}/sweep.csv",
+            "ukf_tuning": _published(ctx, "ukf_tuning.csv"),
         },
         outputs=lambda ctx: {"verdicts": f"{ctx.results}/verdicts.csv"},
         report={"verdicts": ("Verdicts", "verdicts")},
@@ -157,6 +169,7 @@ STEPS = (
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
             "scenario_schema": SCENARIO_SCHEMA,
             "sweep": f"{ctx.results}/sweep.csv",
+            "ukf_tuning": _published(ctx, "ukf_tuning.csv"),
             "figures": [ctx.figure(f) for f in [*FIGURES, SWEEP_FIGURE]],
         }
     ),

@@ -3,7 +3,7 @@
 An item selects ``{filter: <name>}``; its quantity is ``roll_rms_deg`` or ``pitch_rms_deg``.
 It is judged on each averaging window of ``window_summary.csv`` of the published scenario
 (:mod:`pipeline.altimeter_attitude.windows`): row suffix ``flight`` (RMS over runs and over
-time after the transient, as rms_summary.csv) and ``steady`` (after the first bank that makes
+time after the transient, as rms_summary.csv) and ``after_bank`` (after the first bank that makes
 roll observable), each with the Monte Carlo standard error of that RMS (delta method over
 the per-run mean squares of ``window_run_rms.csv``) as its standard error. A failing row
 carries the shared cause of :func:`pipeline.altimeter_attitude.causes.rms_cause`.
@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from pipeline.altimeter_attitude.columns import ALTIMETER_FILTERS, WINDOWS
+from pipeline.altimeter_attitude.columns import ALTIMETER_FILTERS, WINDOW_LABELS, WINDOWS
 from pipeline.config import ConfigError
 from pipeline.verdicts.kinds import Found
 from pipeline.verdicts.published import Problem
@@ -32,8 +32,9 @@ RMS_QUANTITIES = ("roll_rms_deg", "pitch_rms_deg")
 
 class ScenarioResults:
     """The result files of one scenario, read once, its transient (s), and for the causes of
-    failing rows: the bank (deg) that opens its steady window, the sweep (sweep.csv, None if
-    not given) and the parsed published file (its items and claims)."""
+    failing rows: the bank (deg) that opens its after-bank window, the sweep (sweep.csv, None if
+    not given), the UKF tuning grid (ukf_tuning.csv, None if not given) and the parsed
+    published file (its items and claims)."""
 
     def __init__(
         self,
@@ -43,6 +44,7 @@ class ScenarioResults:
         bank_deg: float = math.nan,
         sweep: str | Path | None = None,
         published: Mapping[str, Any] | None = None,
+        tuning: str | Path | None = None,
     ) -> None:
         d = Path(directory)
         self.directory = d
@@ -59,6 +61,7 @@ class ScenarioResults:
         self.load_factor = truth["load_factor"]
         self.true_roll_deg = truth["roll_deg"]
         self.sweep = pd.read_csv(sweep) if sweep is not None else None
+        self.tuning = pd.read_csv(tuning) if tuning is not None else None
         self.published = dict(published or {"items": [], "claims": []})
         self.cache: dict[Any, Any] = {}
 
@@ -138,7 +141,11 @@ def locate(item: Mapping[str, Any], res: ScenarioResults) -> list[Found]:
         start, end = float(row["t_start_s"]), float(row["t_end_s"])
         if not math.isfinite(start):
             found.append(
-                Found(method=filt, suffix=window, missing=f"the scenario has no {window} window")
+                Found(
+                    method=filt,
+                    suffix=window,
+                    missing=f"the scenario has no {WINDOW_LABELS[window]}",
+                )
             )
             continue
         per_run = res.per_run(filt, angle, window)
@@ -150,7 +157,7 @@ def locate(item: Mapping[str, Any], res: ScenarioResults) -> list[Found]:
                 standard_error=se,
                 suffix=window,
                 notes=(
-                    f"{window} window: RMS over runs and over {start:.5g}-{end:.5g} s",
+                    f"{WINDOW_LABELS[window]}: RMS over runs and over {start:.5g}-{end:.5g} s",
                     f"MC standard error of our RMS {se:.3f} deg ({len(per_run)} runs)",
                 ),
                 cause=cause,

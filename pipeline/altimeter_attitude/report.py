@@ -8,7 +8,7 @@ Inputs (:class:`~pipeline.report.model.ReportInputs`; ``results/altimeter_attitu
 * ``<scenario>/rms_summary.csv``, ``<scenario>/noise_free.csv``,
   ``<scenario>/window_summary.csv`` (optional) and ``<scenario>/provenance.json`` of every
   scenario folder holding an rms_summary.csv;
-* ``sweep.csv`` (the one-at-a-time sensitivity sweep);
+* ``sweep.csv`` (the one-at-a-time sensitivity sweep) and ``<published>/ukf_tuning.csv``;
 * ``figures/*.png`` (``PAPER.figures``; a missing figure is shown as "not available");
 * the scenario files ``config/scenarios/altimeter_attitude/*.yaml`` (description, decisions);
 * the setting ``published_scenario`` (default ``paper``).
@@ -30,6 +30,7 @@ from pipeline.altimeter_attitude.columns import (
     ALTIMETER_FILTERS,
     RMS_SUMMARY_COLUMNS,
     SWEEP_COLUMNS,
+    UKF_TUNING_COLUMNS,
     WINDOW_SUMMARY_COLUMNS,
 )
 from pipeline.altimeter_attitude.paper import PAPER
@@ -41,10 +42,11 @@ from pipeline.altimeter_attitude.report_findings import (
     sweep_table,
 )
 from pipeline.altimeter_attitude.report_summary import (
+    after_bank_blocks,
     headline_blocks,
-    steady_blocks,
     summary_blocks,
 )
+from pipeline.altimeter_attitude.report_tuning import tuning_section
 from pipeline.altimeter_attitude.scenario import load_scenario
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
@@ -142,7 +144,7 @@ def _verdicts(verdicts: pd.DataFrame) -> Section:
     intro = Paragraph(
         "Values: the paper's approximate RMS errors against ours over two windows of the "
         "published scenario (window_summary.csv), rows /flight (after the transient) and "
-        "/steady (after the first bank that makes roll observable); tolerance and Monte Carlo "
+        "/after_bank (after the first bank that makes roll observable); tolerance and Monte Carlo "
         "standard error in the tolerance and note columns. Claims: a predicate over the "
         "results; the reproduced column is its computed evidence. The sigma-consistency claims "
         "have one row per angle: NEES above the chi-square band means the filter's sigma is "
@@ -190,7 +192,7 @@ def _results(
         fmts["n_runs"] = lambda x: DASH if pd.isna(x) else str(int(x))
         inner: list[Block] = [Paragraph(descriptions[name])] if descriptions.get(name) else []
         inner.append(frame_table(s, formatters=fmts))
-        inner += steady_blocks((windows or {}).get(name))
+        inner += after_bank_blocks((windows or {}).get(name))
         if missing:
             inner.append(Paragraph(f"Filters without results: {', '.join(missing)}."))
         title = f"Scenario {name}" + (" (published scenario)" if name == published else "")
@@ -198,7 +200,7 @@ def _results(
     return Section("results", "Results per scenario", blocks, subs)
 
 
-def _figures(figures_dir: Path, sweep: pd.DataFrame | None) -> Section:
+def _figures(figures_dir: Path, sweep: pd.DataFrame | None, tuning: Section) -> Section:
     inner: list[Block] = list(figure_blocks(PAPER, figures_dir, [SWEEP_FIGURE]))
     if sweep is None or sweep.empty:
         inner.append(not_available("sweep.csv"))
@@ -218,7 +220,7 @@ def _figures(figures_dir: Path, sweep: pd.DataFrame | None) -> Section:
         "figures",
         "Figures",
         list(figure_blocks(PAPER, figures_dir, FIGURES)),
-        [Section("sweep", "Sensitivity sweep", inner)],
+        [Section("sweep", "Sensitivity sweep", inner), tuning],
     )
 
 
@@ -318,6 +320,7 @@ def report(inputs: ReportInputs) -> PaperReport:
     audit_path = results / "equation_audit.csv"
     verdicts_path = results / "verdicts.csv"
     sweep_path = results / "sweep.csv"
+    tuning_path = results / published_scenario / "ukf_tuning.csv"
     summary_paths = sorted(results.glob("*/rms_summary.csv"))
     audit = _read(audit_path, AUDIT_COLUMNS, as_text=True)
     verdicts = _read(
@@ -360,7 +363,11 @@ def report(inputs: ReportInputs) -> PaperReport:
             windows,
             headline_blocks(verdicts, sums, published_scenario, windows),
         ),
-        _figures(inputs.figures, sweep),
+        _figures(
+            inputs.figures,
+            sweep,
+            tuning_section(_read(tuning_path, UKF_TUNING_COLUMNS), inputs.shown(tuning_path)),
+        ),
         findings_section(sums, sweep, noise_free),
         _assumptions(files, inputs.shown),
         _provenance(
@@ -372,6 +379,7 @@ def report(inputs: ReportInputs) -> PaperReport:
                 *summary_paths,
                 *(p.parent / "window_summary.csv" for p in summary_paths),
                 sweep_path,
+                tuning_path,
             ],
             inputs.shown,
         ),

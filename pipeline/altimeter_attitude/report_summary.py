@@ -13,7 +13,7 @@ from typing import Any
 
 import pandas as pd
 
-from pipeline.altimeter_attitude.columns import RMS_SUMMARY_COLUMNS, WINDOWS
+from pipeline.altimeter_attitude.columns import RMS_SUMMARY_COLUMNS, WINDOW_LABELS, WINDOWS
 from pipeline.altimeter_attitude.filter_comparison import ANGLES
 from pipeline.altimeter_attitude.report_findings import DASH, filter_order, fmt3, fmt_ratio
 from pipeline.columns import AUDIT_STATUSES
@@ -25,7 +25,7 @@ __all__ = [
     "VALUE_WORDS",
     "group_counts",
     "headline_blocks",
-    "steady_blocks",
+    "after_bank_blocks",
     "summary_blocks",
 ]
 
@@ -91,9 +91,11 @@ def _window_text(windows: pd.DataFrame | None) -> str:
         rows = windows[windows["window"] == w]
         if len(rows) and math.isfinite(float(rows.iloc[0]["t_start_s"])):
             r = rows.iloc[0]
-            parts.append(f"{w} {float(r['t_start_s']):.5g}-{float(r['t_end_s']):.5g} s")
+            parts.append(
+                f"{WINDOW_LABELS[w]} {float(r['t_start_s']):.5g}-{float(r['t_end_s']):.5g} s"
+            )
         elif len(rows):
-            parts.append(f"{w}: none in this scenario")
+            parts.append(f"{WINDOW_LABELS[w]}: none in this scenario")
     return " Windows (window_summary.csv): " + ", ".join(parts) + "." if parts else ""
 
 
@@ -143,7 +145,7 @@ def _headline(
         ratios = [float(by_q.at[q, "ours / published"]) for q in qs]
         ratio = "–".join(dict.fromkeys(fmt_ratio(x, 1) for x in (min(ratios), max(ratios))))
         parts.append(
-            f"{filt} {names} RMS over the {window} window {ours} deg (paper: {pub} deg; ours is "
+            f"{filt} {names} RMS over the {WINDOW_LABELS[window]} {ours} deg (paper: {pub} deg; ours is "
             f"{ratio} times the paper's)"
         )
     text = (
@@ -183,23 +185,23 @@ def _headline(
     return blocks
 
 
-def steady_blocks(windows: pd.DataFrame | None) -> list[Block]:
-    """The steady-window statistics of one scenario (window_summary.csv)."""
+def after_bank_blocks(windows: pd.DataFrame | None) -> list[Block]:
+    """The statistics of the window after the first bank of one scenario (window_summary.csv)."""
     if windows is None:
         return []
-    steady = windows[windows["window"] == "steady"]
-    if steady.empty:
+    after = windows[windows["window"] == "after_bank"]
+    if after.empty:
         return []
-    start, end = float(steady["t_start_s"].iloc[0]), float(steady["t_end_s"].iloc[0])
+    start, end = float(after["t_start_s"].iloc[0]), float(after["t_end_s"].iloc[0])
     if pd.isna(start):
-        return [Paragraph("Steady window: none (no bank of the set roll ends before the end).")]
+        return [Paragraph("After-bank window: none (no bank of the set roll ends before the end).")]
     cols = list(RMS_SUMMARY_COLUMNS)
-    s = steady[cols].set_index("filter").reindex(filter_order(list(steady["filter"])))
+    s = after[cols].set_index("filter").reindex(filter_order(list(after["filter"])))
     fmts = {c: fmt3 for c in cols if c not in ("filter", "n_runs")}
     fmts["n_runs"] = lambda x: DASH if pd.isna(x) else str(int(x))
     return [
         Paragraph(
-            f"Steady window {start:.5g}-{end:.5g} s (from the end of the first bank that makes "
+            f"After-bank window {start:.5g}-{end:.5g} s (from the end of the first bank that makes "
             "roll observable; window_summary.csv):"
         ),
         frame_table(s.reset_index(), formatters=fmts),

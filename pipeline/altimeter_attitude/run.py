@@ -12,7 +12,7 @@ Writes, under ``results/altimeter_attitude/<scenario>/``:
   transient (for paired comparisons between filters);
 * ``window_summary.csv`` (``WINDOW_SUMMARY_COLUMNS``) and ``window_run_rms.csv``
   (``WINDOW_RUN_RMS_COLUMNS``): the same statistics over each averaging window, the flight
-  after the transient and the steady state after the first bank
+  after the transient and the window after the first bank
   (:mod:`pipeline.altimeter_attitude.windows`);
 * ``timeseries.csv`` (``TIMESERIES_COLUMNS``): the RMS-over-runs curves of Figs 7-12 at
   ``metrics.output_rate_hz``;

@@ -47,7 +47,9 @@ class Scenario:
     seed: int
     transient: float
     output_rate: float
-    steady_bank: float  # rad: the steady window starts when the first bank of this roll ends
+    after_bank: (
+        float  # rad: the window after the first bank starts when the first bank of this roll ends
+    )
 
     @property
     def config_sha256(self) -> str:
@@ -132,7 +134,7 @@ def build_scenario(raw: Any, path: Path) -> Scenario:
         seed=int(raw["monte_carlo"]["seed"]),
         transient=float(raw["metrics"]["transient_s"]),
         output_rate=out_rate,
-        steady_bank=float(raw["metrics"]["steady_after_bank_deg"]) * DEG,
+        after_bank=float(raw["metrics"]["after_bank_deg"]) * DEG,
     )
     sc.decisions()  # every decision names a real field
     return sc

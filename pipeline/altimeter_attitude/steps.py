@@ -42,6 +42,11 @@ def verdicts(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) 
 
     results = Path(inputs["results"][0]).parent
     frame = write_verdicts(
-        inputs["published"], inputs["scenario"], results, outputs["verdicts"], inputs["sweep"]
+        inputs["published"],
+        inputs["scenario"],
+        results,
+        outputs["verdicts"],
+        inputs["sweep"],
+        inputs.get("ukf_tuning"),
     )
     log(frame["verdict"].value_counts().to_string())

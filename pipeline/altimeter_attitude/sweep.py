@@ -6,7 +6,7 @@ maneuver intensity (what the altimeter can observe comes from the vertical-plane
 accelerations), and the initial roll/pitch error. Points that share the sample rate are
 stacked along the run axis and filtered in one vectorised pass; errors are then computed per
 point against that point's own truth, over the flight after the transient and over the
-point's own steady window (:mod:`pipeline.altimeter_attitude.windows`; NaN where it has
+point's own after-bank window (:mod:`pipeline.altimeter_attitude.windows`; NaN where it has
 none). Writes ``sweep.csv`` (``SWEEP_COLUMNS``).
 """
 
@@ -91,12 +91,12 @@ def run_sweep(
         for i, ((sc, labels), part) in enumerate(zip(unique.values(), parts, strict=True)):
             sl = slice(i * n_runs, (i + 1) * n_runs)
             first = int(round(sc.transient * sc.sensors.rate_hz))
-            steady = windows.scenario_windows(sc)[WINDOWS.index("steady")]
+            after = windows.scenario_windows(sc)[WINDOWS.index("after_bank")]
             for name, est in estimates.items():
                 mine = _slice(est, sl)
                 row = metrics.summary_row(mine, part.truth, first)
-                if steady.defined:
-                    srow = metrics.summary_row(mine, part.truth, steady.first)
+                if after.defined:
+                    srow = metrics.summary_row(mine, part.truth, after.first)
                 else:
                     srow = {"roll_rms_deg": math.nan, "pitch_rms_deg": math.nan}
                 for parameter, v in labels:
@@ -108,9 +108,9 @@ def run_sweep(
                             "roll_rms_deg": row["roll_rms_deg"],
                             "pitch_rms_deg": row["pitch_rms_deg"],
                             "n_runs": n_runs,
-                            "steady_roll_rms_deg": srow["roll_rms_deg"],
-                            "steady_pitch_rms_deg": srow["pitch_rms_deg"],
-                            "steady_start_s": steady.start,
+                            "after_bank_roll_rms_deg": srow["roll_rms_deg"],
+                            "after_bank_pitch_rms_deg": srow["pitch_rms_deg"],
+                            "after_bank_start_s": after.start,
                         }
                     )
         log(

@@ -1,10 +1,10 @@
 """Verdicts of the altimeter-attitude paper: published numbers and claims vs our Monte Carlo.
 
 Reads ``config/published/altimeter_attitude.yaml``, the published scenario's YAML (its
-transient and the bank that opens its steady window), in its results folder
+transient and the bank that opens its after-bank window), in its results folder
 ``rms_summary.csv``, ``noise_free.csv``, ``run_rms.csv``, ``window_summary.csv``,
-``window_run_rms.csv``, ``timeseries.csv`` and ``truth.csv``, and ``sweep.csv`` (evidence of
-the causes); writes ``results/altimeter_attitude/verdicts.csv``. The
+``window_run_rms.csv``, ``timeseries.csv``, ``truth.csv`` and ``ukf_tuning.csv``, and
+``sweep.csv`` (the last two: evidence of the causes); writes ``results/altimeter_attitude/verdicts.csv``. The
 rules are the shared engine's (:mod:`pipeline.verdicts`); this module binds the paper's locator
 (:mod:`pipeline.altimeter_attitude.quantities`) and claim tests
 (:mod:`pipeline.altimeter_attitude.claims`). ``method`` is the filter a verdict is about.
@@ -36,11 +36,13 @@ def write_verdicts(
     results_dir: str | Path,
     out_path: str | Path,
     sweep_path: str | Path | None = None,
+    tuning_path: str | Path | None = None,
 ) -> pd.DataFrame:
     """Judge every published number and claim; write ``out_path`` atomically.
 
     ``scenario_path``: the published scenario's YAML; ``results_dir``: its results folder;
-    ``sweep_path``: sweep.csv (without it the causes carry no sweep evidence).
+    ``sweep_path``: sweep.csv and ``tuning_path``: ukf_tuning.csv (without them the causes
+    carry no sweep or tuning evidence).
     """
     import math
 
@@ -51,9 +53,10 @@ def write_verdicts(
         return ScenarioResults(
             results_dir,
             sc.transient,
-            bank_deg=math.degrees(sc.steady_bank),
+            bank_deg=math.degrees(sc.after_bank),
             sweep=sweep_path,
             published=load_published(published_path),
+            tuning=tuning_path,
         )
 
     return engine.write_verdicts(
@@ -76,10 +79,15 @@ def main(argv: list[str] | None = None) -> int:
     )
     parser.add_argument("--results", type=Path, required=True, help="its results directory")
     parser.add_argument("--sweep", type=Path, default=None, help="sweep.csv (evidence of causes)")
+    parser.add_argument(
+        "--tuning", type=Path, default=None, help="ukf_tuning.csv (evidence of causes)"
+    )
     parser.add_argument("--out", type=Path, required=True, help="verdicts.csv to write")
     args = parser.parse_args(argv)
     try:
-        frame = write_verdicts(args.published, args.scenario, args.results, args.out, args.sweep)
+        frame = write_verdicts(
+            args.published, args.scenario, args.results, args.out, args.sweep, args.tuning
+        )
     except (ValueError, OSError) as exc:
         print(f"error: {exc}")
         return 2

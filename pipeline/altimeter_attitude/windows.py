@@ -4,12 +4,12 @@ The paper quotes one RMS per filter and angle without saying over which times. T
 
 * ``flight``: the state times after ``metrics.transient_s`` (the window of rms_summary.csv and
   run_rms.csv, which these files repeat so that both windows are read the same way);
-* ``steady``: from the end of the first bank with |roll| >= ``metrics.steady_after_bank_deg``
+* ``after_bank``: from the end of the first bank with |roll| >= ``metrics.after_bank_deg``
   (found on the scenario's true roll at the state times) to the end of the flight, and not
   before the transient. In wings-level flight a roll error moves the vertical specific force
   only to second order, so the altimeter sees roll first in a bank; after the first one the
   error no longer carries the initial roll error. A scenario without such a bank, or whose
-  first bank lasts to the end, has no steady window: its rows hold NaN statistics.
+  first bank lasts to the end, has no after-bank window: its rows hold NaN statistics.
 
 Both files have one block per window; the statistics are those of
 :func:`pipeline.altimeter_attitude.metrics.summary_row` and ``run_rms_frame`` from the
@@ -83,17 +83,17 @@ def state_times(sc: Scenario) -> np.ndarray:
 
 
 def scenario_windows(sc: Scenario) -> tuple[Window, ...]:
-    """The ``flight`` and ``steady`` windows of a scenario (in :data:`WINDOWS` order)."""
+    """The ``flight`` and ``after_bank`` windows of a scenario (in :data:`WINDOWS` order)."""
     t = state_times(sc)
     first = int(round(sc.transient * sc.sensors.rate_hz))
     flight = Window("flight", first, float(t[first]), float(t[-1]))
-    k = bank_end_index(sc.profiles.roll(t)[0], sc.steady_bank)
+    k = bank_end_index(sc.profiles.roll(t)[0], sc.after_bank)
     if k is None:
-        steady = Window("steady", None, math.nan, float(t[-1]))
+        after = Window("after_bank", None, math.nan, float(t[-1]))
     else:
         k = max(k, first)
-        steady = Window("steady", k, float(t[k]), float(t[-1]))
-    out = {"flight": flight, "steady": steady}
+        after = Window("after_bank", k, float(t[k]), float(t[-1]))
+    out = {"flight": flight, "after_bank": after}
     return tuple(out[w] for w in WINDOWS)
 
 

@@ -26,10 +26,13 @@ from pipeline.altimeter_attitude.columns import (
     ALTIMETER_FILTERS,
     RMS_SUMMARY_COLUMNS,
     SWEEP_COLUMNS,
+    UKF_TUNING_COLUMNS,
     WINDOW_SUMMARY_COLUMNS,
 )
 from pipeline.altimeter_attitude.paper import PAPER
+from pipeline.altimeter_attitude.report_tuning import tuning_sentence
 from pipeline.altimeter_attitude.scenario import load_scenario
+from pipeline.altimeter_attitude.ukf import MerweWeights
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
 from pipeline.report import html as H
@@ -84,13 +87,13 @@ def _synthetic_summary(rng: np.random.Generator) -> pd.DataFrame:
 
 
 def _synthetic_windows(summary: pd.DataFrame) -> pd.DataFrame:
-    """window_summary.csv: the flight is rms_summary.csv, the steady window half of it."""
-    steady = summary.copy()
-    steady[RMS_SUMMARY_COLUMNS[1:-1]] *= 0.5
+    """window_summary.csv: the flight is rms_summary.csv, the window after the first bank half of it."""
+    after = summary.copy()
+    after[RMS_SUMMARY_COLUMNS[1:-1]] *= 0.5
     return pd.concat(
         [
             summary.assign(window="flight", t_start_s=20.0, t_end_s=200.0),
-            steady.assign(window="steady", t_start_s=140.18, t_end_s=200.0),
+            after.assign(window="after_bank", t_start_s=140.18, t_end_s=200.0),
         ]
     )[WINDOW_SUMMARY_COLUMNS]
 
@@ -108,7 +111,7 @@ def _synthetic_verdicts() -> pd.DataFrame:
         ),
         ("V2.lkf_pitch", "statistical", "pitch_rms_deg", "linear_kf", "0.07", "0.08", "consistent"),
         (
-            "V2.lkf_pitch/steady",
+            "V2.lkf_pitch/after_bank",
             "approximate",
             "pitch_rms_deg",
             "linear_kf",
@@ -148,6 +151,28 @@ def _synthetic_sweep(rng: np.random.Generator) -> pd.DataFrame:
     return pd.DataFrame(rows, columns=SWEEP_COLUMNS)
 
 
+def _synthetic_tuning(rng: np.random.Generator) -> pd.DataFrame:
+    rows = []
+    for a in (0.5, 1.0):
+        for k in (-1.0, 0.0):
+            w = MerweWeights(4, a, 2.0, k)
+            rows.append(
+                {
+                    "alpha": a,
+                    "kappa": k,
+                    "beta": 2.0,
+                    "wm0": w.Wm[0],
+                    "wc0": w.Wc[0],
+                    "nonnegative_weights": bool((w.Wm >= 0).all() and (w.Wc >= 0).all()),
+                    "chosen": (a, k) == (1.0, 0.0),
+                    **{c: rng.uniform(0.1, 0.6) for c in UKF_TUNING_COLUMNS[7:13]},
+                    "n_runs": 100,
+                    "status": "ok",
+                }
+            )
+    return pd.DataFrame(rows, columns=UKF_TUNING_COLUMNS)
+
+
 def _tiny_png(path: Path, label: str) -> None:
     fig = Figure(figsize=(1.2, 0.8), dpi=40)
     ax = fig.add_subplot()
@@ -178,6 +203,11 @@ def make_inputs(root: Path, *, figures: bool = True, audit: bool = True) -> dict
                 shutil.copy(REAL / name / f, d / f)
         if not (d / "rms_summary.csv").is_file():
             _synthetic_summary(rng).to_csv(d / "rms_summary.csv", index=False)
+        if name == "paper":
+            if (REAL / name / "ukf_tuning.csv").is_file():
+                shutil.copy(REAL / name / "ukf_tuning.csv", d / "ukf_tuning.csv")
+            else:
+                _synthetic_tuning(rng).to_csv(d / "ukf_tuning.csv", index=False)
         if (REAL / name / "window_summary.csv").is_file():
             shutil.copy(REAL / name / "window_summary.csv", d / "window_summary.csv")
         else:
@@ -450,6 +480,20 @@ def test_sweep_table_holds_every_point(built):
         assert f"<td>{fmt3(r.pitch_rms_deg)}</td>" in sec
 
 
+def test_ukf_tuning_table_holds_every_setting_and_marks_the_used_one(built):
+    tuning = pd.read_csv(built["results"] / "paper" / "ukf_tuning.csv")
+    sec = plain(section_html(built["text"], "ukf-tuning"))
+    assert H.escape(tuning_sentence(tuning)) in sec
+    for r in tuning.itertuples():
+        assert f"<td>{fmt3(r.pitch_rms_deg)}</td>" in sec
+        assert f"<td>{fmt3(r.noise_free_pitch_rms_deg)}</td>" in sec
+    used = tuning[tuning["chosen"]]
+    assert len(used) == 1 and bool(used["nonnegative_weights"].iloc[0])
+    assert sec.count("<td>yes</td>") == int(
+        tuning["chosen"].sum() + tuning["nonnegative_weights"].sum()
+    )
+
+
 def test_findings_are_computed(built):
     sec = plain(section_html(built["text"], "findings"))
     for path in built["summaries"]:
@@ -559,12 +603,12 @@ def test_summary_names_no_row_by_id():
         assert i not in text, i
 
 
-def test_steady_window_table_per_scenario(built):
+def test_after_bank_window_table_per_scenario(built):
     for path in built["summaries"]:
         w = pd.read_csv(path.parent / "window_summary.csv")
-        steady = w[w["window"] == "steady"]
+        after = w[w["window"] == "after_bank"]
         sec = plain(section_html(built["text"], f"results-{H.slugify(path.parent.name)}"))
-        start = float(steady["t_start_s"].iloc[0])
-        assert f"Steady window {start:.5g}-" in sec
-        for row in steady.itertuples():
+        start = float(after["t_start_s"].iloc[0])
+        assert f"After-bank window {start:.5g}-" in sec
+        for row in after.itertuples():
             assert f"<td>{row.filter}</td><td>{fmt3(row.roll_rms_deg)}</td>" in sec

@@ -15,6 +15,7 @@ from pipeline.altimeter_attitude.columns import (
     RUN_RMS_COLUMNS,
     SWEEP_COLUMNS,
     TIMESERIES_COLUMNS,
+    UKF_TUNING_COLUMNS,
     WINDOW_RUN_RMS_COLUMNS,
     WINDOW_SUMMARY_COLUMNS,
 )
@@ -24,12 +25,12 @@ from pipeline.columns import VERDICT_FILE_COLUMNS
 from pipeline.verdicts.engine import verdict_table
 
 FILTERS = ("linear_kf", "linear_kf_no_gamma", "ukf", "ekf", "gyro_only", "accel_leveling")
-STEADY_START = 50.0  # s: the synthetic flight's first bank (40-50 s, 30 deg) ends here
+AFTER_BANK_START = 50.0  # s: the synthetic flight's first bank (40-50 s, 30 deg) ends here
 BANK_DEG = 10.0
 LO, HI = nees_bounds(50)
 
 
-def judge(published, scenario_dir, transient, sweep=True):
+def judge(published, scenario_dir, transient, sweep=True, tuning=None):
     """Every verdict row of the published file on the synthetic results of scenario_dir."""
     res = ScenarioResults(
         scenario_dir,
@@ -37,6 +38,7 @@ def judge(published, scenario_dir, transient, sweep=True):
         bank_deg=BANK_DEG,
         sweep=scenario_dir / "sweep.csv" if sweep else None,
         published=published,
+        tuning=tuning,
     )
     return verdict_table(published, locate, CLAIMS, res)
 
@@ -50,11 +52,11 @@ def _results(
     norm=1e-6,
     nees_curve=None,
     gyro_curve=None,
-    steady=None,
+    after=None,
     noise_free_share=0.0,
 ):
-    """Synthetic results: each filter's error at a flight level (``steady``: another level in
-    the steady window, by filter); 50 runs, 100 s at 5 Hz, a 30-deg bank over 40-50 s."""
+    """Synthetic results: each filter's error at a flight level (``after``: another level in
+    the window after the first bank, by filter); 50 runs, 100 s at 5 Hz, a 30-deg bank over 40-50 s."""
     rng = np.random.default_rng(0)
     n_runs = 50
     t = np.arange(0.0, 100.0, 0.2)
@@ -68,14 +70,14 @@ def _results(
         "gyro_only": 2.0,
         "accel_leveling": 0.5,
     }
-    steady_level = {**level, **(steady or {})}
+    after_bank_level = {**level, **(after or {})}
     runs, summary, windows, window_runs, series = [], [], [], [], []
     for f in FILTERS:
         base = np.sqrt(rng.chisquare(20, n_runs) / 20)
         base /= np.sqrt(np.mean(base**2))  # the RMS over runs is the level itself
         for window, lv, start in (
             ("flight", level[f], 10.0),
-            ("steady", steady_level[f], STEADY_START),
+            ("after_bank", after_bank_level[f], AFTER_BANK_START),
         ):
             per_run = lv * base
             frame = pd.DataFrame(
@@ -134,25 +136,25 @@ def _results(
     pd.DataFrame({"t_s": t, "load_factor": load, "roll_deg": roll}).to_csv(
         tmp_path / "truth.csv", index=False
     )
-    _sweep(tmp_path, level, steady_level)
+    _sweep(tmp_path, level, after_bank_level)
     return tmp_path
 
 
-def _sweep(tmp_path, level, steady_level):
-    """A sweep whose steady RMS falls as rate^-0.5 (1.0x the scenario's at 50 Hz) and whose
+def _sweep(tmp_path, level, after_bank_level):
+    """A sweep whose after-bank RMS falls as rate^-0.5 (1.0x the scenario's at 50 Hz) and whose
     other parameter scales the flight RMS by 0.5-2."""
     rows = []
     for f in ("linear_kf", "ukf"):
         for rate in (25.0, 50.0, 100.0):
             k = np.sqrt(50.0 / rate)
             rows.append(
-                ("imu_rate_hz", rate, f, level[f], level[f] / 2, 20, steady_level[f] * k)
-                + (steady_level[f] * k / 2, STEADY_START)
+                ("imu_rate_hz", rate, f, level[f], level[f] / 2, 20, after_bank_level[f] * k)
+                + (after_bank_level[f] * k / 2, AFTER_BANK_START)
             )
         for scale in (0.5, 2.0):
             rows.append(
                 ("intensity", scale, f, level[f] * scale, level[f] * scale / 2, 20)
-                + (steady_level[f], steady_level[f] / 2, STEADY_START)
+                + (after_bank_level[f], after_bank_level[f] / 2, AFTER_BANK_START)
             )
     pd.DataFrame(rows, columns=SWEEP_COLUMNS).to_csv(tmp_path / "sweep.csv", index=False)
 
@@ -178,23 +180,23 @@ def test_approximate_values_reproduced_when_equal(published, tmp_path):
 
 
 def test_each_value_is_judged_on_both_windows(published, tmp_path):
-    """The paper's 0.16 and 0.07 in the steady window only: /steady reproduced, /flight not."""
-    d = _results(tmp_path, lkf_roll=0.9, steady={"linear_kf": 0.16})
+    """The paper's 0.16 and 0.07 in the window after the first bank only: /after_bank reproduced, /flight not."""
+    d = _results(tmp_path, lkf_roll=0.9, after={"linear_kf": 0.16})
     frame = judge(published, d, 10.0).set_index("id")
     for item in published["items"]:
-        assert {f"{item['id']}/flight", f"{item['id']}/steady"} <= set(frame.index)
+        assert {f"{item['id']}/flight", f"{item['id']}/after_bank"} <= set(frame.index)
     assert frame.at["V1.lkf_roll/flight", "verdict"] == "not_reproduced"
-    assert frame.at["V1.lkf_roll/steady", "verdict"] == "reproduced"
-    assert frame.at["V2.lkf_pitch/steady", "verdict"] == "reproduced"
-    assert frame.at["V1.lkf_roll/steady", "reproduced"].startswith("0.16")
-    assert f"over {STEADY_START:.5g}-99.8 s" in frame.at["V1.lkf_roll/steady", "note"]
+    assert frame.at["V1.lkf_roll/after_bank", "verdict"] == "reproduced"
+    assert frame.at["V2.lkf_pitch/after_bank", "verdict"] == "reproduced"
+    assert frame.at["V1.lkf_roll/after_bank", "reproduced"].startswith("0.16")
+    assert f"over {AFTER_BANK_START:.5g}-99.8 s" in frame.at["V1.lkf_roll/after_bank", "note"]
     # a reproduced row carries no cause, a failing one the shared 'unpublished' cause
-    assert frame.at["V1.lkf_roll/steady", "cause"] == ""
+    assert frame.at["V1.lkf_roll/after_bank", "cause"] == ""
     assert frame.at["V1.lkf_roll/flight", "cause_kind"] == "unpublished"
 
 
 def test_unpublished_cause_is_shared_and_computed(published, tmp_path):
-    d = _results(tmp_path, lkf_roll=0.9, ukf_roll=0.6, steady={"linear_kf": 0.4, "ukf": 0.5})
+    d = _results(tmp_path, lkf_roll=0.9, ukf_roll=0.6, after={"linear_kf": 0.4, "ukf": 0.5})
     frame = judge(published, d, 10.0)
     failing = frame[frame["verdict"] == "not_reproduced"]
     assert len(failing) == 8 and failing["cause_detail"].nunique() == 1
@@ -203,14 +205,37 @@ def test_unpublished_cause_is_shared_and_computed(published, tmp_path):
     assert "trajectory" in text and "sample rates" in text and "does not refute" in text
     # the window moves linear_kf roll by 0.9 - 0.4 = 0.5 deg; the largest of the four
     assert re.search(r"changes our 4 values by 0\.\d\d-0\.50 deg", text), text
-    # sweep: flight roll of linear_kf moves 0.45-1.8 (1.35); steady by 0.4 (sqrt 2 - sqrt 1/2)
-    assert "1.35 deg over the flight" in text
-    # the sweep's steady RMS is s (50 / rate)^0.5: it reaches the published p at 50 (s / p)^2
+    # sweep: linear_kf's flight roll spans 0.45-1.8 (intensity 0.5 and 2); 0.16 lies outside
+    assert "linear_kf roll flight: 0.16 outside [0.45, 1.80] deg" in text
+    # after the bank: 0.4 (50 / rate)^0.5 over 25-100 Hz, [0.28, 0.57]; 0.16 outside
+    assert "linear_kf roll after the first bank: 0.16 outside [0.28, 0.57] deg" in text
+    assert "inside the range our sweep" in text and "in 0 of 8 cases" in text
+    assert "no one of these choices moved alone over our range reaches them" in text
+    # the sweep's after-bank RMS is s (50 / rate)^0.5: it reaches the published p at 50 (s / p)^2
     rates = [50 * (s / p) ** 2 for s, p in ((0.4, 0.16), (0.2, 0.07), (0.5, 0.21), (0.25, 0.1))]
     assert "b = 0.50" in text and f"near {min(rates):.0f}-{max(rates):.0f} Hz" in text
+    # with the UKF tuning grid (pitch 0.2 at both settings): the paper's 0.1 lies outside
+    tuned = judge(published, d, 10.0, tuning=_tuning(tmp_path, (0.18, 0.17)))
+    text = tuned[tuned["verdict"] == "not_reproduced"]["cause_detail"].iloc[0]
+    assert "sigma-point settings of ukf_tuning.csv the UKF's RMS over the flight gives" in text
+    assert "pitch 0.1 outside [0.200, 0.200] deg" in text and "roll 0.21 outside" in text
+    inside = judge(published, d, 10.0, tuning=_tuning(tmp_path, (0.18, 0.17), pitch=(0.05, 0.2)))
+    text = inside[inside["verdict"] == "not_reproduced"]["cause_detail"].iloc[0]
+    assert "pitch 0.1 inside [0.050, 0.200] deg" in text
     # without the sweep the cause keeps the window evidence only
     bare = judge(published, d, 10.0, sweep=False)
     assert "sweep" not in bare[bare["verdict"] == "not_reproduced"]["cause_detail"].iloc[0]
+
+
+def test_unpublished_cause_says_when_the_paper_lies_inside_the_sweep(published, tmp_path):
+    """linear_kf's flight roll 0.3: the sweep spans [0.15, 0.60], which holds the paper's 0.16
+    (the other seven ranges do not hold theirs)."""
+    d = _results(tmp_path, lkf_roll=0.3, ukf_roll=0.6, after={"linear_kf": 0.4, "ukf": 0.5})
+    frame = judge(published, d, 10.0).set_index("id")
+    text = frame.at["V1.lkf_roll/flight", "cause_detail"]
+    assert frame.at["V1.lkf_roll/flight", "verdict"] == "not_reproduced"
+    assert "linear_kf roll flight: 0.16 inside [0.15, 0.60] deg" in text, text
+    assert "in 1 of 8 cases" in text and "no one of these choices" not in text
 
 
 def test_claims_on_synthetic_results(published, tmp_path):
@@ -218,7 +243,7 @@ def test_claims_on_synthetic_results(published, tmp_path):
     assert list(frame.columns) == VERDICT_FILE_COLUMNS
     v = _by_id(frame)
     assert v["C1.linear_beats_ukf/flight"] == "upheld"  # 0.16 vs 0.40 over 50 runs
-    assert v["C1.linear_beats_ukf/steady"] == "upheld"
+    assert v["C1.linear_beats_ukf/after_bank"] == "upheld"
     assert v["C2.lkf_sigma_consistent/roll"] == "upheld"
     assert v["C2.lkf_sigma_consistent/pitch"] == "upheld"
     assert v["C4.lkf_error_bounded"] == "upheld"
@@ -247,14 +272,14 @@ def test_claims_flip_with_the_data(published, tmp_path):
 
 
 def test_ranking_is_judged_per_window_with_one_cause(published, tmp_path):
-    """Worse than the UKF over the flight, better in the steady window."""
-    d = _results(tmp_path, lkf_roll=0.9, ukf_roll=0.5, steady={"linear_kf": 0.2, "ukf": 0.4})
+    """Worse than the UKF over the flight, better in the window after the first bank."""
+    d = _results(tmp_path, lkf_roll=0.9, ukf_roll=0.5, after={"linear_kf": 0.2, "ukf": 0.4})
     frame = judge(published, d, 10.0).set_index("id")
     assert frame.at["C1.linear_beats_ukf/flight", "verdict"] == "not_upheld"
-    assert frame.at["C1.linear_beats_ukf/steady", "verdict"] == "upheld"
+    assert frame.at["C1.linear_beats_ukf/after_bank", "verdict"] == "upheld"
     cause = frame.at["C1.linear_beats_ukf/flight", "cause_detail"]
     assert "over the flight linear_kf 0.900/0.450 against ukf 0.500/0.250 deg" in cause
-    assert "0 for roll (flight)" in cause and "5 for roll (steady)" in cause
+    assert "0 for roll (flight)" in cause and "5 for roll (after the first bank)" in cause
 
 
 def test_missing_filter_is_named(published, tmp_path):
@@ -342,6 +367,66 @@ def test_over_confident_bias_cause_needs_a_noise_free_bias(published, tmp_path):
     assert clean.set_index("id").at["C3.ukf_sigma_consistent/pitch", "cause"] == ""
 
 
+def _tuning(tmp_path, noise_free_pitch, pitch=(0.2, 0.2)):
+    """A two-setting UKF tuning grid with the given noise-free and Monte Carlo pitch RMS."""
+    frame = pd.DataFrame(
+        {
+            "alpha": [0.5, 1.0],
+            "kappa": [0.0, 0.0],
+            "beta": [2.0, 2.0],
+            "wm0": [-3.0, 0.0],
+            "wc0": [-0.25, 2.0],
+            "nonnegative_weights": [False, True],
+            "chosen": [False, True],
+            "roll_rms_deg": [0.4, 0.4],
+            "pitch_rms_deg": list(pitch),
+            "nees_roll": [1.0, 1.0],
+            "nees_pitch": [1.6, 1.6],
+            "noise_free_roll_rms_deg": [0.1, 0.1],
+            "noise_free_pitch_rms_deg": list(noise_free_pitch),
+            "n_runs": [50, 50],
+            "status": ["ok", "ok"],
+        },
+        columns=UKF_TUNING_COLUMNS,
+    )
+    path = tmp_path / "ukf_tuning.csv"
+    frame.to_csv(path, index=False)
+    return path
+
+
+def test_bias_cause_says_whether_the_tuning_makes_the_bias(published, tmp_path):
+    """UKF pitch: Monte Carlo 0.2 deg, noise-free 0.18 (nees 1.6: over-confident). A grid
+    in which every setting keeps the noise-free pitch >= half the Monte Carlo one rules the
+    tuning out; one setting at 0.02 deg would make the tuning the cause."""
+    d = _results(tmp_path, nees=1.6, noise_free_share=0.9)
+    kept = judge(published, d, 10.0, tuning=_tuning(tmp_path, (0.18, 0.17)))
+    row = kept.set_index("id").loc["C3.ukf_sigma_consistent/pitch"]
+    assert row["cause"] == "the UKF's own prediction bias, not its sigma-point tuning"
+    text = row["cause_detail"]
+    assert "it is not the sigma-point tuning: all 2 settings" in text, text
+    assert "noise-free RMS spans [0.170, 0.180] deg" in text
+    assert "centre weight W0 from -3 to 0" in text
+    # the synthetic EKF is as biased on noise-free data as the UKF: the model is not cleared
+    assert "so the model carries the bias too" in text
+    removed = judge(published, d, 10.0, tuning=_tuning(tmp_path, (0.18, 0.02)))
+    row = removed.set_index("id").loc["C3.ukf_sigma_consistent/pitch"]
+    assert row["cause"] == "the filter's error is mostly a bias outside its sigma"
+    assert "the sigma-point tuning matters: 1 of 2 settings" in row["cause_detail"]
+
+
+def test_bias_cause_clears_the_model_when_the_ekf_has_no_bias(published, tmp_path):
+    d = _results(tmp_path, nees=1.6, noise_free_share=0.9)
+    nf = pd.read_csv(d / "noise_free.csv")
+    nf.loc[nf["filter"] == "ekf", ["roll_rms_deg", "pitch_rms_deg"]] = 1e-4
+    nf.to_csv(d / "noise_free.csv", index=False)
+    text = (
+        judge(published, d, 10.0)
+        .set_index("id")
+        .at["C3.ukf_sigma_consistent/pitch", "cause_detail"]
+    )
+    assert "has 0.000 deg, so the bias is in the unscented prediction's mean itself" in text
+
+
 def test_bounded_is_not_checkable_when_the_drifting_reference_passes_too(published, tmp_path):
     flat = _by_id(judge(published, _results(tmp_path, gyro_curve=lambda t: 2.0 + 0 * t), 10.0))
     assert flat["C4.lkf_error_bounded"] == "not_checkable"
@@ -349,14 +434,14 @@ def test_bounded_is_not_checkable_when_the_drifting_reference_passes_too(publish
     assert growing["C4.lkf_error_bounded"] == "upheld"
 
 
-def test_no_steady_window_is_not_checkable(published, tmp_path):
+def test_no_after_bank_window_is_not_checkable(published, tmp_path):
     d = _results(tmp_path)
     w = pd.read_csv(d / "window_summary.csv")
-    steady = w["window"] == "steady"
-    w.loc[steady, "t_start_s"] = np.nan
-    w.loc[steady, ["roll_rms_deg", "pitch_rms_deg"]] = np.nan
+    after = w["window"] == "after_bank"
+    w.loc[after, "t_start_s"] = np.nan
+    w.loc[after, ["roll_rms_deg", "pitch_rms_deg"]] = np.nan
     w.to_csv(d / "window_summary.csv", index=False)
     v = _by_id(judge(published, d, 10.0))
-    assert v["V1.lkf_roll/steady"] == "not_checkable"
-    assert v["C1.linear_beats_ukf/steady"] == "not_checkable"
+    assert v["V1.lkf_roll/after_bank"] == "not_checkable"
+    assert v["C1.linear_beats_ukf/after_bank"] == "not_checkable"
     assert v["V1.lkf_roll/flight"] == "reproduced"

@@ -1,4 +1,4 @@
-"""Averaging windows: the steady window starts where the first bank ends, on the trajectory, and
+"""Averaging windows: the window after the first bank starts where the first bank ends, on the trajectory, and
 window_summary.csv / window_run_rms.csv hold the same statistics as rms_summary.csv / run_rms.csv
 from each window's start."""
 
@@ -26,28 +26,28 @@ GENTLE = "config/scenarios/altimeter_attitude/gentle_cruise.yaml"
 
 
 @pytest.mark.parametrize("path", SCENARIOS, ids=lambda p: p.stem)
-def test_steady_window_starts_where_the_first_bank_ends(path):
+def test_after_bank_window_starts_where_the_first_bank_ends(path):
     sc = load_scenario(path)
-    flight, steady = windows.scenario_windows(sc)
-    assert (flight.name, steady.name) == WINDOWS
+    flight, after = windows.scenario_windows(sc)
+    assert (flight.name, after.name) == WINDOWS
     t = windows.state_times(sc)
     roll = np.degrees(np.abs(sc.profiles.roll(t)[0]))
-    bank = math.degrees(sc.steady_bank)
+    bank = math.degrees(sc.after_bank)
     assert flight.start == pytest.approx(sc.transient) and flight.end == t[-1]
-    k = steady.first
-    assert k is not None and steady.start == t[k] and steady.end == t[-1]
+    k = after.first
+    assert k is not None and after.start == t[k] and after.end == t[-1]
     # level at the start, banked just before it, and banked once before it: the first bank
     assert roll[k] < bank <= roll[k - 1]
     first_bank = int(np.argmax(roll >= bank))
     assert first_bank < k and (roll[first_bank:k] >= bank).all()
 
 
-def test_no_bank_no_steady_window(tmp_path):
+def test_no_bank_no_after_bank_window(tmp_path):
     base = load_scenario(GENTLE)
     raw = {**base.raw, "trajectory": {**base.raw["trajectory"], "maneuvers": []}}
     sc = build_scenario(raw, base.path)
-    _, steady = windows.scenario_windows(sc)
-    assert not steady.defined and math.isnan(steady.start)
+    _, after = windows.scenario_windows(sc)
+    assert not after.defined and math.isnan(after.start)
 
 
 @pytest.fixture(scope="module")
@@ -81,25 +81,25 @@ def test_window_files_repeat_the_summaries_from_each_start(simulated):
             assert math.sqrt(np.mean(per_run["pitch_rms_deg"] ** 2)) == pytest.approx(
                 row["pitch_rms_deg"], rel=1e-12
             )
-    steady = summary[summary["window"] == "steady"]
-    assert (steady["t_start_s"] == wins[1].start).all() and wins[1].start > sc.transient
+    after = summary[summary["window"] == "after_bank"]
+    assert (after["t_start_s"] == wins[1].start).all() and wins[1].start > sc.transient
 
 
 def test_undefined_window_rows_are_nan(simulated):
     sc, inp, est = simulated
     wins = (
         windows.Window("flight", 100, 2.0, 120.0),
-        windows.Window("steady", None, math.nan, 1.0),
+        windows.Window("after_bank", None, math.nan, 1.0),
     )
     summary = windows.summary_frame(wins, est, inp.truth)
-    steady = summary[summary["window"] == "steady"]
-    assert steady["roll_rms_deg"].isna().all() and (steady["n_runs"] == 3).all()
+    after = summary[summary["window"] == "after_bank"]
+    assert after["roll_rms_deg"].isna().all() and (after["n_runs"] == 3).all()
     runs = windows.run_frame(wins, est, inp.truth)
-    assert runs.loc[runs["window"] == "steady", "pitch_rms_deg"].isna().all()
+    assert runs.loc[runs["window"] == "after_bank", "pitch_rms_deg"].isna().all()
     assert len(runs) == 2 * 2 * 3
 
 
-def test_sweep_reports_each_points_steady_window():
+def test_sweep_reports_each_points_after_bank_window():
     from pipeline.altimeter_attitude.sweep import run_sweep
 
     sc = load_scenario(GENTLE)
@@ -109,8 +109,8 @@ def test_sweep_reports_each_points_steady_window():
         variant = build_scenario(
             {**sc.raw, "trajectory": {**sc.raw["trajectory"], "intensity": v}}, sc.path
         )
-        assert row["steady_start_s"] == windows.scenario_windows(variant)[1].start
-        assert 0 < row["steady_roll_rms_deg"] and math.isfinite(row["steady_pitch_rms_deg"])
+        assert row["after_bank_start_s"] == windows.scenario_windows(variant)[1].start
+        assert 0 < row["after_bank_roll_rms_deg"] and math.isfinite(row["after_bank_pitch_rms_deg"])
     # a harder turn banks more and ends its bank of >= 10 deg later
-    starts = frame.set_index("value")["steady_start_s"]
+    starts = frame.set_index("value")["after_bank_start_s"]
     assert starts[1.5] > starts[1.0]
