@@ -120,6 +120,41 @@ def test_a_main_claims_mark_follows_its_rows():
         )
 
 
+def test_a_main_claim_unresolved_on_some_variants_is_not_checkable_never_re():
+    """A claim that holds where it is resolved (N = 1e6, noise-free) but is not resolved at
+    another N is not checkable, whether the main claim names the claim or one variant of it;
+    a sibling that holds or fails but is not named changes nothing."""
+    ids = ["C7/N=1", "C7/N=1e6", "C7/noise-free", "T1"]
+    held = ["upheld", "upheld", "upheld", "reproduced"]
+    unresolved = ["not_checkable", "upheld", "upheld", "reproduced"]
+    for rows in (["C7"], ["C7/N=1e6"], ["C7/N=1e6", "T1"]):
+        claim = [{"label": "x", "text": "t", "rows": rows}]
+        assert judge_main_claims(claim, ids, held, "f")[0].mark == "Re"
+        result = judge_main_claims(claim, ids, unresolved, "f")[0]
+        assert result.mark == "not_checkable", rows
+        assert result.unchecked == ("C7/N=1",)
+    failing = ["not_upheld", "upheld", "upheld", "reproduced"]
+    claim = [{"label": "x", "text": "t", "rows": ["C7/N=1e6"]}]
+    assert judge_main_claims(claim, ids, failing, "f")[0].mark == "Re"
+
+
+@pytest.mark.parametrize("slug", ["north_finding", "platform_drift", "altimeter_attitude"])
+def test_no_built_main_claim_is_re_while_a_variant_of_its_claims_is_unresolved(slug):
+    """On the built verdicts.csv: a main claim marked [Re] has every row of every claim it
+    names passing (all variants ``<id>/...``), computed here from the csv, not by the rule."""
+    path = ROOT / "results" / slug / "verdicts.csv"
+    if not path.exists():
+        pytest.skip(f"{path} not built")
+    v = pd.read_csv(path, dtype=str, keep_default_na=False)
+    data = load_published(ROOT / "config" / "published" / f"{slug}.yaml")
+    ids, verdicts = list(v["id"]), list(v["verdict"])
+    for result in judge_main_claims(data["main_claims"], ids, verdicts, str(path)):
+        bases = {r.split("/", 1)[0] for r in result.rows}
+        every = [vd for i, vd in zip(ids, verdicts, strict=True) if i.split("/", 1)[0] in bases]
+        if result.mark == "Re":
+            assert all(x in ("reproduced", "consistent", "upheld") for x in every), result.label
+
+
 def _caused(v: pd.DataFrame, ids: list[str], kind: str, title: str, detail: str) -> None:
     for i in ids:
         v.loc[v["id"] == i, ["cause_kind", "cause", "cause_detail"]] = [kind, title, detail]
