@@ -37,6 +37,14 @@ def abstract(papers: Sequence[PaperParts]) -> str:
     n_good = sum(n.get("reproduced", 0) + n.get("consistent", 0) for n in numbers)
     n_claim = sum(sum(p.score.claims.values()) for p in papers)
     n_upheld = sum(p.score.claims.get("upheld", 0) for p in papers)
+    n_checks = sum(sum(p.score.self_checks.values()) for p in papers)
+    n_checked = sum(p.score.self_checks.get("reproduced", 0) for p in papers)
+    checks = (
+        f" Apart from them, {n_checked} of {plural(n_checks, 'self-check')} passed (rows that "
+        "check our code and derivation, not a number a paper measured)."
+        if n_checks
+        else ""
+    )
     return (
         f"We reproduced {plural(len(papers), 'inertial-navigation paper')} from their equations "
         "up: every printed equation was transcribed and compared with a SymPy derivation from "
@@ -50,7 +58,7 @@ def abstract(papers: Sequence[PaperParts]) -> str:
         + (f"{n_err} of them errors of the paper" if n_classified else "not yet classified by kind")
         + "), "
         f"{n_good} of {n_num} published numbers are reproduced and {n_upheld} of "
-        f"{plural(n_claim, 'claim verdict')} are upheld."
+        f"{plural(n_claim, 'claim verdict')} are upheld." + checks
     )
 
 

@@ -204,7 +204,9 @@ class ScoreRow:
     """One paper's line of the scoreboard; every count is computed from the CSVs.
 
     ``audit``: match / differs / not_checkable; ``numbers``: reproduced /
-    consistent / not_reproduced; ``claims``: upheld / not_upheld / not_checkable;
+    consistent / not_reproduced (self-checks excluded); ``claims``: upheld / not_upheld /
+    not_checkable; ``self_checks``: reproduced / not_reproduced of the rows the published file
+    marks ``self_check`` (counted apart from the published numbers);
     ``line``: the ReScience-style one-line verdict; ``anchor``: the section id;
     ``summary``: the paper on the first page; ``differs``: the differing equations by kind
     (paper_error, text_artefact, convention, and "" for unclassified).
@@ -219,6 +221,7 @@ class ScoreRow:
     anchor: str
     summary: PaperSummary | None = None
     differs: dict[str, int] = field(default_factory=dict)
+    self_checks: dict[str, int] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)

@@ -12,6 +12,7 @@ import yaml
 
 from pipeline.config import ConfigError
 from pipeline.report.precision import compact_tolerance, reproduced_header, shown_reproduced
+from pipeline.report.scoreboard import score_row
 from pipeline.report.summary import paper_summary
 from pipeline.report.vocabulary import differs_word, plain_words, tone
 from pipeline.verdicts.main_claims import judge_main_claims, mark
@@ -153,6 +154,36 @@ def test_no_built_main_claim_is_re_while_a_variant_of_its_claims_is_unresolved(s
         every = [vd for i, vd in zip(ids, verdicts, strict=True) if i.split("/", 1)[0] in bases]
         if result.mark == "Re":
             assert all(x in ("reproduced", "consistent", "upheld") for x in every), result.label
+
+
+def test_self_checks_are_counted_apart_from_the_published_numbers(tmp_path):
+    """Rows of items marked self_check (Table 1 here) leave the published-number counts and
+    the scoreboard's number columns, are counted on their own, and a main claim resting on them
+    only says so; an empty self_check is refused at parse with the file, entry and field."""
+    data = {**PUBLISHED, "items": [{**i, "self_check": "ideal sensor"} if i["id"].startswith("T1")
+                                   else i for i in PUBLISHED["items"]]}  # fmt: skip
+    v = _verdicts(T1_b="not_reproduced")
+    s = paper_summary(v, pd.DataFrame({"status": []}), data, "f")
+    assert s.sentences[0].startswith("Reproduced: 1 of 1 published number (all statistical)")
+    assert "apart from them, 1 of 2 self-checks passed (they check our code" in s.sentences[0]
+    assert s.main_claims[0].basis.startswith("it rests on self-checks only")
+    assert s.main_claims[0].basis.endswith(": 1 of 2 self-checks passed")
+    plain = paper_summary(v, pd.DataFrame({"status": []}), PUBLISHED, "f")
+    assert plain.sentences[0].startswith("Reproduced: 2 of 3 published numbers (1 of 2 exact")
+    assert "self-check" not in plain.sentences[0] + plain.main_claims[0].basis
+    audit = pd.DataFrame({"status": ["match"]})
+    row = score_row("demo", "Demo", audit, v, data)
+    assert row.numbers == {
+        "reproduced": 0,
+        "consistent": 1,
+        "not_reproduced": 0,
+        "not_checkable": 0,
+    }
+    assert row.self_checks == {"reproduced": 1, "not_reproduced": 1}
+    assert sum(score_row("demo", "Demo", audit, v, PUBLISHED).numbers.values()) == 3
+    bad = {**data, "items": [{**data["items"][0], "self_check": ""}, *data["items"][1:]]}
+    with pytest.raises(ConfigError, match=r"item 'T1\.a' \(items\[0\]\), field 'self_check'"):
+        load_published(_write(tmp_path, bad))
 
 
 def _caused(v: pd.DataFrame, ids: list[str], kind: str, title: str, detail: str) -> None:
