@@ -24,6 +24,7 @@ from typing import Any
 import pandas as pd
 
 from pipeline.report.html import format_value
+from pipeline.report.vocabulary import ROW_ID
 
 __all__ = [
     "FAILURE_WORDS",
@@ -346,7 +347,8 @@ def frame_table(
     empty_text: str = "no rows",
 ) -> Table | Paragraph:
     """A DataFrame as a :class:`Table` of text cells (``formatters`` per column, else
-    :func:`~pipeline.report.html.format_value` with ``sig`` digits). ``status`` names the
+    :func:`~pipeline.report.html.format_value` with ``sig`` digits; a column ``id`` of
+    verdict-row ids is headed :data:`~pipeline.report.vocabulary.ROW_ID`). ``status`` names the
     column holding each row's verdict or status word (``row_status``, ``highlight``). An
     empty frame is a paragraph saying so."""
     if df.empty:
@@ -363,7 +365,7 @@ def frame_table(
     ]
     words = [str(w) for w in df[status]] if status is not None else []
     return Table(
-        columns=[str(c) for c in df.columns],
+        columns=[ROW_ID if str(c) == "id" else str(c) for c in df.columns],
         rows=rows,
         caption=caption,
         highlight=[i for i, w in enumerate(words) if w in FAILURE_WORDS],
