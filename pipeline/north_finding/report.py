@@ -120,8 +120,8 @@ def _summary(
             f"{_spelled(vc)}. The equation audit checked {len(audit)} printed equations against "
             f"the SymPy derivation: {_spelled(ac)}. Where a printed equation differs, the "
             "pipeline uses the derived one. Verdict rules: exact (ideal sensor, equal to the "
-            "printed precision), approximate (a value the text gives as 'about', within its "
-            "stated tolerance), statistical (where the published value falls in the Monte "
+            "printed precision), approximate (a value the text gives as 'about', within one "
+            "unit of its last significant digit or 10 %, the larger), statistical (where the published value falls in the Monte "
             "Carlo distribution), claim (a predicate over results, judged at each averaging "
             "count N where it ranks methods)."
         )

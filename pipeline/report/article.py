@@ -67,7 +67,7 @@ def introduction(papers: Sequence[PaperParts], appendix_names: Sequence[str]) ->
     words = [
         ["match", "equation", "the printed form equals the derivation (residual 0)"],
         ["differs", "equation", "the printed form differs; the derived form is used"],
-        ["reproduced", "exact or approximate number", "equal to the printed digits (rounded or truncated), or within the stated tolerance"],
+        ["reproduced", "exact or approximate number", "equal to the printed digits (rounded or truncated), or within the tolerance its printed form gives"],
         ["consistent", "statistical number", "inside the Monte Carlo distribution (0.5-99.5 percentile rank)"],
         ["not_reproduced", "number", "outside the printed precision, tolerance or distribution"],
         ["upheld", "claim", "the claim's test holds on our results"],
@@ -87,10 +87,13 @@ def introduction(papers: Sequence[PaperParts], appendix_names: Sequence[str]) ->
         Paragraph(
             "Following ReScience C, each paper is judged by its main claims: [Re] when every "
             "verdict that bears on a claim holds, [¬Re] when any fails, not checkable otherwise. "
-            "A number is exact (equal to the printed digits), approximate (a value read off a plot "
-            "or printed as 'about', with its stated tolerance) or statistical (where the published "
+            "A number is exact (equal to the printed digits), approximate (printed as 'about X': "
+            "within one unit of its last significant digit or 10 % of X, the larger; read off a "
+            "plot: within half a tick of the figure's axis) or statistical (where the published "
             "value falls in our Monte Carlo distribution); a claim is a sentence of the paper "
-            "judged by a named test. A printed equation that differs is an "
+            "judged by a named test. Rows that check our own code and derivation rather than a "
+            "number a paper measured (an ideal sensor inverting its own formula) are self-checks, "
+            "counted apart. A printed equation that differs is an "
             + ", an ".join(DIFFERS_WORDS.values())
             + "; only an error of the paper is shown in red. A failing verdict names its root "
             "cause where one is identified, by a short title; its kind is one of: "

@@ -27,7 +27,12 @@ from pipeline.report.model import (
 )
 from pipeline.report.page_html import build_page, page_sections, render_page
 from pipeline.report.paper_parts import load_parts
-from pipeline.report.paper_section import MAIN_TITLES, paper_section, supporting_section
+from pipeline.report.paper_section import (
+    MAIN_TITLES,
+    further_sections,
+    paper_section,
+    supporting_section,
+)
 from tests.shared.test_report_no_ids import html_text
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -224,7 +229,12 @@ def test_paper_section_is_assembled_from_the_papers_parts(inputs):
     assert sec.id == "pendulum"
     assert tuple(s.title for s in sec.subsections) == MAIN_TITLES
     summary, audit, published, claims, figures, findings = sec.subsections
-    assert Paragraph("2 periods.") in summary.blocks
+    # one set of blocks for every paper: the paper's own summary section is not repeated in
+    # the shared Summary (its page keeps it among the paper's own sections)
+    assert Paragraph("2 periods.") not in summary.blocks
+    assert [type(b).__name__ for b in summary.blocks[-2:]] == ["Link", "Link"]
+    own = [s for s in further_sections(parts) if s.id == "pendulum-summary"]
+    assert own and Paragraph("2 periods.") in own[0].blocks
     # the combined report has the marks and sentences at its front; its page in the summary
     assert summary.blocks[0].text.startswith("Partial reproduction; 1 of 2 main claims [Re].")
     page_summary = paper_section(parts, page=True).subsections[0]
