@@ -35,6 +35,7 @@ from pipeline.report.paper_parts import PaperParts
 
 __all__ = [
     "MAIN_TITLES",
+    "OVERVIEW",
     "assumptions_section",
     "discussion_section",
     "forms_section",
@@ -43,6 +44,9 @@ __all__ = [
     "supporting_section",
     "prefixed",
 ]
+
+#: the title of the paper's own summary section among its own sections (on its page)
+OVERVIEW = "Overview, as the paper's page counts it"
 
 #: the main-text sections of every paper, in order
 MAIN_TITLES = (
@@ -303,6 +307,12 @@ def supporting_section(
 def further_sections(p: PaperParts) -> list[Section]:
     """The paper's page sections that feed no part of the template, and its own published
     tables (with every note of theirs): the page's last appendix."""
-    used = _used(p) - set(p.report.parts.get("published") or [])
-    used -= set(p.report.parts.get("summary") or [])  # not in the shared Summary: kept here
-    return [prefixed(s, p.slug) for s in p.report.sections if s.id not in used]
+    own = set(p.report.parts.get("summary") or [])  # not in the shared Summary: kept here
+    used = _used(p) - set(p.report.parts.get("published") or []) - own
+    out = []
+    for s in p.report.sections:
+        if s.id in own:  # its id and title apart from the shared Summary's
+            s = Section(f"{s.id}-overview", OVERVIEW, s.blocks, s.subsections)
+        if s.id not in used:
+            out.append(prefixed(s, p.slug))
+    return out

@@ -338,7 +338,7 @@ def test_verdict_and_audit_counts_equal_the_csv(built):
             w.replace(" ", "_"): int(n) for n, w in re.findall(r"(\d+) ([a-z ]+)", tail)
         }
     for item in counts.items:  # every count is on the page
-        assert H.escape(item) in section_html(built["text"], "summary")
+        assert H.escape(item) in section_html(built["text"], "summary-overview")
     for group in expected:
         assert {k: v for k, v in shown[group].items() if v} == dict(expected[group]), group
     # the standard words are shown even at zero
@@ -373,7 +373,7 @@ def test_headline_reads_published_and_ours(built):
     verdicts = pd.read_csv(built["results"] / "verdicts.csv", dtype=str, keep_default_na=False)
     summary = pd.read_csv(built["results"] / "paper" / "rms_summary.csv").set_index("filter")
     windows = pd.read_csv(built["results"] / "paper" / "window_summary.csv")
-    summary_sec = plain(section_html(built["text"], "summary"))
+    summary_sec = plain(section_html(built["text"], "summary-overview"))
     # the headline table is with the results (an appendix), its sentence in the summary
     sec = plain(section_html(built["text"], "results"))
     assert "Published RMS errors" not in summary_sec

@@ -233,7 +233,7 @@ def test_paper_section_is_assembled_from_the_papers_parts(inputs):
     # the shared Summary (its page keeps it among the paper's own sections)
     assert Paragraph("2 periods.") not in summary.blocks
     assert [type(b).__name__ for b in summary.blocks[-2:]] == ["Link", "Link"]
-    own = [s for s in further_sections(parts) if s.id == "pendulum-summary"]
+    own = [s for s in further_sections(parts) if s.id == "pendulum-summary-overview"]
     assert own and Paragraph("2 periods.") in own[0].blocks
     # the combined report has the marks and sentences at its front; its page in the summary
     assert summary.blocks[0].text.startswith("Partial reproduction; 1 of 2 main claims [Re].")
