@@ -40,8 +40,8 @@ def abstract(papers: Sequence[PaperParts]) -> str:
     n_checks = sum(sum(p.score.self_checks.values()) for p in papers)
     n_checked = sum(p.score.self_checks.get("reproduced", 0) for p in papers)
     checks = (
-        f" Apart from them, {n_checked} of {plural(n_checks, 'self-check')} passed (rows that "
-        "check our code and derivation, not a number a paper measured)."
+        f" Counted apart from these, {n_checked} of {plural(n_checks, 'self-check')} passed "
+        "(rows that check our code and derivation, not a number a paper measured)."
         if n_checks
         else ""
     )

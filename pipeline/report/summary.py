@@ -109,7 +109,7 @@ def _reproduced(verdicts: pd.DataFrame, audit: pd.DataFrame, checks: pd.Series) 
         )
     text = "Reproduced: " + (" and ".join(parts) if parts else "nothing was published to check")
     if checks.any():
-        text += f"; apart from them, {_self_check_text(verdicts[checks])} ({SELF_CHECK_MEANING})"
+        text += f"; counted apart, {_self_check_text(verdicts[checks])} ({SELF_CHECK_MEANING})"
     if len(audit):
         n_match = int((audit["status"] == "match").sum())
         text += f"; {n_match} of {plural(len(audit), 'printed equation')} match the derivation"
@@ -141,7 +141,7 @@ def _basis(
     n = len(result.rows)
     if result.rows and all(r in checks for r in result.rows):
         done = _self_check_text(rows.loc[list(result.rows)])
-        return f"it rests on self-checks only, {SELF_CHECK_MEANING}: {done}"
+        return f"it rests on self-checks only ({SELF_CHECK_MEANING}): {done}"
     if result.mark == "Re":
         return "the verdict on it holds" if n == 1 else f"all {n} verdicts on it hold"
     if result.mark == "not_Re":

@@ -77,7 +77,9 @@ def _counts(r: BlockRenderer, rows: list[ScoreRow]) -> str:
         body.append(f"[{r.anchor_link(row.anchor, row.title)}], " + ", ".join(shown))
     return (
         "#text(size: 8pt, table(\n"
-        f"  columns: (1fr,) + (auto,) * {len(words)},\n"
+        # the paper's title gets a fixed share; the counts split the rest (with four groups,
+        # auto-width counts would squeeze the title to a word a line)
+        f"  columns: (3.6cm,) + (1fr,) * {len(words)},\n"
         "  align: (x, y) => if x == 0 { left } else { center },\n"
         "  fill: (x, y) => if y < 2 { headfill },\n"
         f"  table.header({head1}, {head2}),\n  " + ",\n  ".join(body) + ",\n))"

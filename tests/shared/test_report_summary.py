@@ -165,7 +165,7 @@ def test_self_checks_are_counted_apart_from_the_published_numbers(tmp_path):
     v = _verdicts(T1_b="not_reproduced")
     s = paper_summary(v, pd.DataFrame({"status": []}), data, "f")
     assert s.sentences[0].startswith("Reproduced: 1 of 1 published number (all statistical)")
-    assert "apart from them, 1 of 2 self-checks passed (they check our code" in s.sentences[0]
+    assert "counted apart, 1 of 2 self-checks passed (they check our code" in s.sentences[0]
     assert s.main_claims[0].basis.startswith("it rests on self-checks only")
     assert s.main_claims[0].basis.endswith(": 1 of 2 self-checks passed")
     plain = paper_summary(v, pd.DataFrame({"status": []}), PUBLISHED, "f")
