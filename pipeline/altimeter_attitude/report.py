@@ -63,6 +63,7 @@ from pipeline.report.model import (
     frame_table,
     not_available,
 )
+from pipeline.report.plain import plain_value
 
 __all__ = ["FILTER_LABELS", "build_page", "report"]
 
@@ -94,10 +95,8 @@ def _read(
 
 
 def _value_text(value: Any) -> str:
-    """A config value as text: strings as they are, everything else compact JSON."""
-    if isinstance(value, str):
-        return value
-    return json.dumps(value, ensure_ascii=False, default=str)
+    """A config value as plain text (no JSON: :func:`pipeline.report.plain.plain_value`)."""
+    return plain_value(value)
 
 
 def _audit(audit: pd.DataFrame | None, path: str) -> list[Block]:

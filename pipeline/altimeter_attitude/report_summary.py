@@ -132,7 +132,7 @@ def _headline(
                 "verdict": r.verdict,
             }
         )
-    table = pd.DataFrame(rows)
+    table = pd.DataFrame(rows).drop(columns=["id"])  # filter, window, quantity name the row
     parts = []
     for (filt, window), g in table.groupby(["filter", "window"], sort=False):
         by_q = g.set_index("quantity")

@@ -32,7 +32,6 @@ from pipeline.north_finding.report_results import (
     discover_scenarios,
     provenance_section,
     read_csv,
-    render_value,
     scenario_section,
 )
 from pipeline.report.figures import figure_blocks
@@ -47,6 +46,8 @@ from pipeline.report.model import (
     frame_table,
     not_available,
 )
+from pipeline.report.plain import predicate_sentence, row_labels
+from pipeline.verdicts.published import load_published as load_published_file
 
 __all__ = ["QUANTITY_LABELS", "audit_counts", "report", "verdict_counts"]
 
@@ -119,8 +120,8 @@ def _summary(
             f"{_spelled(vc)}. The equation audit checked {len(audit)} printed equations against "
             f"the SymPy derivation: {_spelled(ac)}. Where a printed equation differs, the "
             "pipeline uses the derived one. Verdict rules: exact (ideal sensor, equal to the "
-            "printed precision), approximate (a value the text gives as 'about', within its "
-            "stated tolerance), statistical (where the published value falls in the Monte "
+            "printed precision), approximate (a value the text gives as 'about', within one "
+            "unit of its last significant digit or 10 %, the larger), statistical (where the published value falls in the Monte "
             "Carlo distribution), claim (a predicate over results, judged at each averaging "
             "count N where it ranks methods)."
         )
@@ -254,7 +255,9 @@ def _claim_rows(claims: pd.DataFrame, verdicts: pd.DataFrame) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def _claims(claims: pd.DataFrame, items: pd.DataFrame, verdicts: pd.DataFrame) -> Section:
+def _claims(
+    claims: pd.DataFrame, items: pd.DataFrame, verdicts: pd.DataFrame, names: dict[str, str]
+) -> Section:
     v = verdicts.drop_duplicates("id", keep="first").set_index("id")
     blocks: list[Block] = []
     subs: list[Section] = []
@@ -262,7 +265,7 @@ def _claims(claims: pd.DataFrame, items: pd.DataFrame, verdicts: pd.DataFrame) -
         c = _claim_rows(claims, verdicts)
         reading = c["note_claim"] if "note_claim" in c.columns else pd.Series(None, index=c.index)
         c = c.assign(
-            predicate=c["predicate"].map(render_value),
+            predicate=c["predicate"].map(lambda p: predicate_sentence(p, names)),
             reading=reading.map(lambda x: "" if x is None or pd.isna(x) else str(x)),
         )
         cols = ["id", "text", "source", "reading", "predicate", "reproduced", "verdict", "note"]
@@ -299,7 +302,7 @@ def _claims(claims: pd.DataFrame, items: pd.DataFrame, verdicts: pd.DataFrame) -
     return Section("claims", "Claims", blocks, subs)
 
 
-def _findings(results: Path, verdicts: pd.DataFrame) -> list[Block]:
+def _findings(results: Path, verdicts: pd.DataFrame, published: dict) -> list[Block]:
     """Findings that go beyond the paper, computed from the results (nothing typed by hand)."""
     agree, n_stat = noise_free_agreement(verdicts)
     blocks: list[Block] = [
@@ -308,7 +311,7 @@ def _findings(results: Path, verdicts: pd.DataFrame) -> list[Block]:
             "values of Tables 1-4 and 9-12, our noise-free real-sensor value (scale factor, "
             "misalignment and bias propagated through the derived formulas, no noise) equals "
             "the published value to within one unit of its last printed digit: "
-            + (", ".join(agree) if agree else "none")
+            + ("; ".join(dict.fromkeys(row_labels(agree, published))) if agree else "none")
             + ". The paper's 'real sensor' tables therefore reflect the deterministic sensor "
             "errors with the noise averaged out; the Monte Carlo spread at our averaging count "
             "is shown in Figs. 1-5 and its dependence on the count in Fig. 6."
@@ -336,6 +339,8 @@ def report(inputs: ReportInputs) -> PaperReport:
     """The paper's report sections, built from ``inputs`` (see the module docstring)."""
     results = inputs.results
     items, claims = load_published(inputs.published)
+    published = load_published_file(inputs.published)
+    names = dict(published.get("names") or {})
     # only a "Table N" label names a table (the text's "Sec. 5-2-2" is no Table 5)
     numbers = items["table"].astype(str).str.extract(r"^Table (\d+)$")[0]
     items = items.assign(table_no=pd.to_numeric(numbers, errors="coerce").astype(float))
@@ -356,9 +361,9 @@ def report(inputs: ReportInputs) -> PaperReport:
         Section("summary", "Summary", _summary(items, claims, verdicts, audit)),
         Section("equation-audit", "Equation audit", _audit(audit)),
         _tables(items, verdicts),
-        _claims(claims, items, verdicts),
+        _claims(claims, items, verdicts, names),
         Section("figures", "Figures 1–6", figures),
-        Section("findings", "Findings beyond the paper", _findings(results, verdicts)),
+        Section("findings", "Findings beyond the paper", _findings(results, verdicts, published)),
         Section(
             "scenarios",
             "Per-scenario results",

@@ -26,6 +26,7 @@ from pipeline.north_finding.columns import (
 )
 from pipeline.report.html import format_value, slugify
 from pipeline.report.model import Block, Paragraph, Section, frame_table, not_available
+from pipeline.report.plain import plain_value
 
 __all__ = [
     "TIMINGS_NOTE",
@@ -115,11 +116,9 @@ def resolve_dotted(data: Any, field: str, *, source: str | Path = "<config>") ->
 
 
 def render_value(value: Any) -> str:
-    """A config value as text: strings as they are, everything else as JSON
-    (``5.0`` stays ``5.0``, ``True`` -> ``true``, mappings and lists compact)."""
-    if isinstance(value, str):
-        return value
-    return json.dumps(value, ensure_ascii=False, default=str)
+    """A config value as plain text (:func:`pipeline.report.plain.plain_value`: ``5.0`` stays
+    ``5.0``, ``True`` -> ``yes``, mappings as ``key = value`` pairs, no JSON)."""
+    return plain_value(value)
 
 
 def load_decisions(path: str | Path) -> tuple[str, pd.DataFrame]:

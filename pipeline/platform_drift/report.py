@@ -32,6 +32,7 @@ from pipeline.report.model import (
     frame_table,
     not_available,
 )
+from pipeline.report.plain import plain_value
 
 __all__ = ["report"]
 
@@ -106,7 +107,7 @@ def _assumptions(scenarios: Path) -> list[Section]:
     for path in sorted(scenarios.glob("*.yaml")):
         raw = load_scenario(path).raw
         rows = [
-            [d["field"], json.dumps(dotted_get(raw, d["field"])), d["text"]]
+            [d["field"], plain_value(dotted_get(raw, d["field"])), d["text"]]
             for d in raw.get("decisions", [])
         ]
         out.append(

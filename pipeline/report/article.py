@@ -43,6 +43,14 @@ def abstract(papers: Sequence[PaperParts]) -> str:
     n_good = sum(n.get("reproduced", 0) + n.get("consistent", 0) for n in numbers)
     n_claim = sum(sum(p.score.claims.values()) for p in papers)
     n_upheld = sum(p.score.claims.get("upheld", 0) for p in papers)
+    n_checks = sum(sum(p.score.self_checks.values()) for p in papers)
+    n_checked = sum(p.score.self_checks.get("reproduced", 0) for p in papers)
+    checks = (
+        f" Counted apart from these, {n_checked} of {plural(n_checks, 'self-check')} passed "
+        "(rows that check our code and derivation, not a number a paper measured)."
+        if n_checks
+        else ""
+    )
     return (
         f"We reproduced {plural(len(papers), 'inertial-navigation paper')} from their equations "
         "up: every printed equation was transcribed and compared with a SymPy derivation from "
@@ -56,7 +64,7 @@ def abstract(papers: Sequence[PaperParts]) -> str:
         + (f"{n_err} of them errors of the paper" if n_classified else "not yet classified by kind")
         + "), "
         f"{n_good} of {n_num} published numbers are reproduced and {n_upheld} of "
-        f"{plural(n_claim, 'claim verdict')} are upheld."
+        f"{plural(n_claim, 'claim verdict')} are upheld." + checks
     )
 
 
@@ -65,7 +73,7 @@ def introduction(papers: Sequence[PaperParts], appendix_names: Sequence[str]) ->
     words = [
         ["match", "equation", "the printed form equals the derivation (residual 0)"],
         ["differs", "equation", "the printed form differs; the derived form is used"],
-        ["reproduced", "exact or approximate number", "equal to the printed digits (rounded or truncated), or within the stated tolerance"],
+        ["reproduced", "exact or approximate number", "equal to the printed digits (rounded or truncated), or within the tolerance its printed form gives"],
         ["consistent", "statistical number", "inside the Monte Carlo distribution (0.5-99.5 percentile rank)"],
         ["not_reproduced", "number", "outside the printed precision, tolerance or distribution"],
         ["upheld", "claim", "the claim's test holds on our results"],
@@ -85,10 +93,13 @@ def introduction(papers: Sequence[PaperParts], appendix_names: Sequence[str]) ->
         Paragraph(
             "Following ReScience C, each paper is judged by its main claims: [Re] when every "
             "verdict that bears on a claim holds, [¬Re] when any fails, not checkable otherwise. "
-            "A number is exact (equal to the printed digits), approximate (a value read off a plot "
-            "or printed as 'about', with its stated tolerance) or statistical (where the published "
+            "A number is exact (equal to the printed digits), approximate (printed as 'about X': "
+            "within one unit of its last significant digit or 10 % of X, the larger; read off a "
+            "plot: within half a tick of the figure's axis) or statistical (where the published "
             "value falls in our Monte Carlo distribution); a claim is a sentence of the paper "
-            "judged by a named test. A printed equation that differs is an "
+            "judged by a named test. Rows that check our own code and derivation rather than a "
+            "number a paper measured (an ideal sensor inverting its own formula) are self-checks, "
+            "counted apart. A printed equation that differs is an "
             + ", an ".join(w for k, w in DIFFERS_WORDS.items() if k not in NEUTRAL_DIFFERS)
             + ", or, where the seed text cannot tell a slip of the OCR from one of the paper, "
             + " or ".join(f"'{DIFFERS_WORDS[k]}'" for k in sorted(NEUTRAL_DIFFERS))

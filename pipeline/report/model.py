@@ -24,6 +24,7 @@ from typing import Any
 import pandas as pd
 
 from pipeline.report.html import format_value
+from pipeline.report.vocabulary import ROW_ID
 
 __all__ = [
     "FAILURE_WORDS",
@@ -204,7 +205,9 @@ class ScoreRow:
     """One paper's line of the scoreboard; every count is computed from the CSVs.
 
     ``audit``: match / differs / not_checkable; ``numbers``: reproduced /
-    consistent / not_reproduced; ``claims``: upheld / not_upheld / not_checkable;
+    consistent / not_reproduced (self-checks excluded); ``claims``: upheld / not_upheld /
+    not_checkable; ``self_checks``: reproduced / not_reproduced of the rows the published file
+    marks ``self_check`` (counted apart from the published numbers);
     ``line``: the ReScience-style one-line verdict; ``anchor``: the section id;
     ``summary``: the paper on the first page; ``differs``: the differing equations by kind
     (paper_error, text_artefact, convention, unclear_from_text, and "" for unclassified).
@@ -219,6 +222,7 @@ class ScoreRow:
     anchor: str
     summary: PaperSummary | None = None
     differs: dict[str, int] = field(default_factory=dict)
+    self_checks: dict[str, int] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -343,7 +347,8 @@ def frame_table(
     empty_text: str = "no rows",
 ) -> Table | Paragraph:
     """A DataFrame as a :class:`Table` of text cells (``formatters`` per column, else
-    :func:`~pipeline.report.html.format_value` with ``sig`` digits). ``status`` names the
+    :func:`~pipeline.report.html.format_value` with ``sig`` digits; a column ``id`` of
+    verdict-row ids is headed :data:`~pipeline.report.vocabulary.ROW_ID`). ``status`` names the
     column holding each row's verdict or status word (``row_status``, ``highlight``). An
     empty frame is a paragraph saying so."""
     if df.empty:
@@ -360,7 +365,7 @@ def frame_table(
     ]
     words = [str(w) for w in df[status]] if status is not None else []
     return Table(
-        columns=[str(c) for c in df.columns],
+        columns=[ROW_ID if str(c) == "id" else str(c) for c in df.columns],
         rows=rows,
         caption=caption,
         highlight=[i for i, w in enumerate(words) if w in FAILURE_WORDS],

@@ -1,8 +1,9 @@
 """One template for a paper, in the combined report and on its own page: the same sections in
 the same order, built from its :class:`~pipeline.report.paper_parts.PaperParts`.
 
-Main text: Summary (the main claims with their marks, the three sentences, the root causes
-listed once in full, the paper's own summary), Equation audit (a statement per differing
+Main text: Summary (the same blocks for every paper: the status, on the paper's page the main
+claims with their marks and the three sentences, the root causes listed once in full, the
+links; the paper's own summary section is kept among its own sections on its page), Equation audit (a statement per differing
 equation), Published numbers and Claims (one row per item or claim, its verdict across the
 curves or averaging counts it is judged on), Figures (the paper's, in its numbering),
 Findings beyond the paper (with the figures the paper lacks). Discussion: the paper's part of
@@ -34,6 +35,7 @@ from pipeline.report.paper_parts import PaperParts
 
 __all__ = [
     "MAIN_TITLES",
+    "OVERVIEW",
     "assumptions_section",
     "discussion_section",
     "forms_section",
@@ -42,6 +44,9 @@ __all__ = [
     "supporting_section",
     "prefixed",
 ]
+
+#: the title of the paper's own summary section among its own sections (on its page)
+OVERVIEW = "Overview, as the paper's page counts it"
 
 #: the main-text sections of every paper, in order
 MAIN_TITLES = (
@@ -183,8 +188,10 @@ def _summary(p: PaperParts, page: bool) -> Section:
             )
         )
         blocks += causes_blocks(s.causes)
-    own, subs = _part(p, "summary")
-    return Section(f"{p.slug}-summary", "Summary", blocks + own + _links(p, page), subs)
+    # the same blocks for every paper: the paper's own summary section (its page's counts and
+    # overview, which differ by paper) is not repeated here; its page keeps it, among the
+    # paper's own sections (further_sections)
+    return Section(f"{p.slug}-summary", "Summary", blocks + _links(p, page), [])
 
 
 def _figures_section(p: PaperParts) -> tuple[Section, list[Block], list[Section]]:
@@ -300,5 +307,12 @@ def supporting_section(
 def further_sections(p: PaperParts) -> list[Section]:
     """The paper's page sections that feed no part of the template, and its own published
     tables (with every note of theirs): the page's last appendix."""
-    used = _used(p) - set(p.report.parts.get("published") or [])
-    return [prefixed(s, p.slug) for s in p.report.sections if s.id not in used]
+    own = set(p.report.parts.get("summary") or [])  # not in the shared Summary: kept here
+    used = _used(p) - set(p.report.parts.get("published") or []) - own
+    out = []
+    for s in p.report.sections:
+        if s.id in own:  # its id and title apart from the shared Summary's
+            s = Section(f"{s.id}-overview", OVERVIEW, s.blocks, s.subsections)
+        if s.id not in used:
+            out.append(prefixed(s, p.slug))
+    return out

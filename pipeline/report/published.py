@@ -39,7 +39,7 @@ from pipeline.report.precision import (
     reproduced_header,
     shown_reproduced,
 )
-from pipeline.report.vocabulary import plain_words
+from pipeline.report.vocabulary import ROW_ID, plain_words
 from pipeline.verdicts import published_items
 
 __all__ = [
@@ -230,13 +230,14 @@ def published_rows_section(sid: str, verdicts: pd.DataFrame, published: Path) ->
                 str(r["verdict"]),
                 compact_reason(str(r.get("reason", ""))),
             ]
-            cells.append(row + ([str(r.get("cause") or "")] if with_cause else []))
+            cells.append(row + ([str(r.get("cause") or "")] if with_cause else []) + [str(r["id"])])
             notes.append(_note(r))
             status.append(str(r["verdict"]))
             if r["verdict"] in FAILURE_WORDS:
                 highlight.append(k)
         columns = ["item", "published", reproduced_header(list(rows["kind"].astype(str)))]
         columns += ["tolerance", "verdict", "why"] + (["cause"] if with_cause else [])
+        columns += [ROW_ID]
         caption = n.caption(label, rows, cells)
         blocks.append(Table(columns, cells, caption, highlight, status, notes))
     return Section(sid, "Published numbers, every row", blocks)
@@ -285,12 +286,12 @@ def claim_rows_section(sid: str, verdicts: pd.DataFrame, published: Path) -> Sec
             plain_words(str(r.get("reason", "")) or str(r.get("tolerance", ""))),
             str(r["verdict"]),
         ]
-        cells.append(row + ([str(r.get("cause") or "")] if with_cause else []))
+        cells.append(row + ([str(r.get("cause") or "")] if with_cause else []) + [str(r["id"])])
         notes.append(_note(r))
         status.append(str(r["verdict"]))
         if r["verdict"] in FAILURE_WORDS:
             highlight.append(k)
     columns = ["claim (where the paper makes it)", "evidence (computed)", "test", "verdict"]
-    columns += ["cause"] if with_cause else []
+    columns += (["cause"] if with_cause else []) + [ROW_ID]
     table = Table(columns, cells, "Claims, every row", highlight, status, notes)
     return Section(sid, "Claims, every row", [table])

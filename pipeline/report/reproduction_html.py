@@ -20,7 +20,7 @@ from pipeline.atomic import write_text
 from pipeline.report import html as H
 from pipeline.report.blocks_html import Anchors, render_block, render_sections, section_numbers
 from pipeline.report.model import Document, MainClaims, Paragraph, ScoreRow, Section
-from pipeline.report.scoreboard import AUDIT_WORDS, CLAIM_WORDS, NUMBER_WORDS
+from pipeline.report.scoreboard import AUDIT_WORDS, CLAIM_WORDS, NUMBER_WORDS, SELF_CHECK_WORDS
 from pipeline.report.vocabulary import tone, word
 
 __all__ = ["CSS", "paper_summaries", "render_html", "section_numbers", "write_html"]
@@ -103,6 +103,7 @@ _GROUPS = (
     ("Equations audited", "audit", AUDIT_WORDS),
     ("Published numbers", "numbers", NUMBER_WORDS),
     ("Claims", "claims", CLAIM_WORDS),
+    ("Self-checks", "self_checks", SELF_CHECK_WORDS),
 )
 _STATUS_TONE = {"full": "full", "not": "none"}
 

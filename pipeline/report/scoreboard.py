@@ -13,13 +13,14 @@ from typing import Any
 import pandas as pd
 
 from pipeline.report.model import ScoreRow
-from pipeline.report.summary import paper_summary, plural
+from pipeline.report.summary import paper_summary, plural, self_checks
 from pipeline.report.vocabulary import DIFFERS_WORDS
 
 __all__ = [
     "AUDIT_WORDS",
     "CLAIM_WORDS",
     "NUMBER_WORDS",
+    "SELF_CHECK_WORDS",
     "counts",
     "differs_by_kind",
     "plural",
@@ -30,6 +31,8 @@ __all__ = [
 AUDIT_WORDS = ("match", "differs", "not_checkable")
 NUMBER_WORDS = ("reproduced", "consistent", "not_reproduced", "not_checkable")
 CLAIM_WORDS = ("upheld", "not_upheld", "not_checkable")
+#: the verdicts of self-checks (rows the published file marks ``self_check``), counted apart
+SELF_CHECK_WORDS = ("reproduced", "not_reproduced")
 
 
 def counts(values: Sequence[str] | pd.Series, words: Sequence[str]) -> dict[str, int]:
@@ -66,7 +69,8 @@ def score_row(
 ) -> ScoreRow:
     """The scoreboard row of one paper, counted from its audit and verdict tables, with its
     summary (``published``: its published-values file, parsed; ``source`` names it)."""
-    numbers = verdicts[verdicts["kind"] != "claim"]
+    checks = self_checks(verdicts, published or {})
+    numbers = verdicts[(verdicts["kind"] != "claim") & ~checks]
     claims = verdicts[verdicts["kind"] == "claim"]
     summary = paper_summary(verdicts, audit, published or {}, source or f"{slug} published values")
     return ScoreRow(
@@ -75,6 +79,7 @@ def score_row(
         audit=counts(audit["status"], AUDIT_WORDS),
         numbers=counts(numbers["verdict"], NUMBER_WORDS),
         claims=counts(claims["verdict"], CLAIM_WORDS),
+        self_checks=counts(verdicts[checks]["verdict"], SELF_CHECK_WORDS),
         line=f"{summary.status}: {summary.sentences[0]}",
         anchor=slug,
         summary=summary,

@@ -30,12 +30,14 @@ from pipeline.report.names import RowNames
 from pipeline.verdicts.main_claims import FAILING, PASSING, judge_main_claims
 
 __all__ = [
+    "SELF_CHECK_MEANING",
     "SENTENCE_WORDS",
     "MainClaimLine",
     "PaperSummary",
     "RowNames",
     "paper_summary",
     "plural",
+    "self_checks",
     "status_of",
 ]
 
@@ -46,6 +48,31 @@ SENTENCE_WORDS = 80
 #: the kinds of a published number, in the order the summary counts them (the introduction
 #: says what each means)
 _NUMBER_KINDS = ("exact", "approximate", "statistical")
+
+
+def self_checks(verdicts: pd.DataFrame, published: Mapping[str, Any]) -> pd.Series:
+    """Which verdict rows are self-checks: rows of an item the published file marks
+    ``self_check`` (it checks our code and derivation, not a number the paper measured, e.g.
+    an ideal-sensor column); they are counted apart from the published numbers.
+
+    >>> v = pd.DataFrame({"id": ["T1.ideal", "T1", "T2.ideal/a"]})
+    >>> self_checks(v, {"items": [{"id": "T1.ideal", "self_check": "r"},
+    ...                           {"id": "T2.ideal", "self_check": "r"}]}).tolist()
+    [True, False, True]
+    """
+    ids = {str(i["id"]) for i in published.get("items") or [] if i.get("self_check")}
+    return pd.Series(
+        [str(r).split("/", 1)[0] in ids for r in verdicts["id"]], index=verdicts.index, dtype=bool
+    )
+
+
+#: what a self-check is, in the summary's words
+SELF_CHECK_MEANING = "they check our code and derivation, not a number the paper measured"
+
+
+def _self_check_text(checks: pd.DataFrame) -> str:
+    passed = int(checks["verdict"].isin(PASSING).sum())
+    return f"{passed} of {plural(len(checks), 'self-check')} passed"
 
 
 def status_of(marks: Sequence[str], verdicts: Sequence[str]) -> str:
@@ -60,8 +87,8 @@ def status_of(marks: Sequence[str], verdicts: Sequence[str]) -> str:
     return "Partial reproduction"
 
 
-def _reproduced(verdicts: pd.DataFrame, audit: pd.DataFrame) -> str:
-    numbers = verdicts[verdicts["kind"] != "claim"]
+def _reproduced(verdicts: pd.DataFrame, audit: pd.DataFrame, checks: pd.Series) -> str:
+    numbers = verdicts[(verdicts["kind"] != "claim") & ~checks]
     claims = verdicts[verdicts["kind"] == "claim"]
     parts = []
     if len(numbers):
@@ -81,6 +108,8 @@ def _reproduced(verdicts: pd.DataFrame, audit: pd.DataFrame) -> str:
             f"{plural(len(claims), 'claim verdict')} upheld"
         )
     text = "Reproduced: " + (" and ".join(parts) if parts else "nothing was published to check")
+    if checks.any():
+        text += f"; counted apart, {_self_check_text(verdicts[checks])} ({SELF_CHECK_MEANING})"
     if len(audit):
         n_match = int((audit["status"] == "match").sum())
         text += f"; {n_match} of {plural(len(audit), 'printed equation')} match the derivation"
@@ -105,9 +134,14 @@ def _not_reproduced(lines: Sequence[CauseLine], unchecked: pd.DataFrame) -> str:
     return text + "."
 
 
-def _basis(result: Any, verdicts: pd.DataFrame, names: RowNames, all_ids: Sequence[str]) -> str:
+def _basis(
+    result: Any, verdicts: pd.DataFrame, names: RowNames, all_ids: Sequence[str], checks: set[str]
+) -> str:
     rows = verdicts.set_index(verdicts["id"].astype(str), drop=False)
     n = len(result.rows)
+    if result.rows and all(r in checks for r in result.rows):
+        done = _self_check_text(rows.loc[list(result.rows)])
+        return f"it rests on self-checks only ({SELF_CHECK_MEANING}): {done}"
     if result.mark == "Re":
         return "the verdict on it holds" if n == 1 else f"all {n} verdicts on it hold"
     if result.mark == "not_Re":
@@ -131,12 +165,15 @@ def paper_summary(
     results = judge_main_claims(
         published.get("main_claims") or [], all_ids, [str(v) for v in verdicts["verdict"]], source
     )
+    checks = self_checks(verdicts, published)
+    check_ids = set(verdicts["id"].astype(str)[checks])
     marks = tuple(
-        MainClaimLine(r.mark, r.label, r.text, _basis(r, verdicts, names, all_ids)) for r in results
+        MainClaimLine(r.mark, r.label, r.text, _basis(r, verdicts, names, all_ids, check_ids))
+        for r in results
     )
     status = status_of([r.mark for r in results], [str(v) for v in verdicts["verdict"]])
     sentences = (
-        _reproduced(verdicts, audit),
+        _reproduced(verdicts, audit, checks),
         _not_reproduced(lines, unchecked),
         causes_sentence(lines),
     )

@@ -6,7 +6,7 @@ paper) and the table of contents.
 from __future__ import annotations
 
 from pipeline.report.model import Document, MainClaims, ScoreRow
-from pipeline.report.scoreboard import AUDIT_WORDS, CLAIM_WORDS, NUMBER_WORDS
+from pipeline.report.scoreboard import AUDIT_WORDS, CLAIM_WORDS, NUMBER_WORDS, SELF_CHECK_WORDS
 from pipeline.report.typst_blocks import BlockRenderer
 from pipeline.report.typst_source import breakable, escape
 from pipeline.report.vocabulary import word
@@ -14,7 +14,7 @@ from pipeline.report.vocabulary import word
 __all__ = ["contents", "title_page"]
 
 # the scoreboard's words, in its order (one list for the HTML, the PDF and the counts)
-_AUDIT, _NUMBERS, _CLAIMS = AUDIT_WORDS, NUMBER_WORDS, CLAIM_WORDS
+_AUDIT, _NUMBERS, _CLAIMS, _CHECKS = AUDIT_WORDS, NUMBER_WORDS, CLAIM_WORDS, SELF_CHECK_WORDS
 
 
 def _tone(status: str) -> str:
@@ -42,18 +42,20 @@ def _counts(r: BlockRenderer, rows: list[ScoreRow]) -> str:
         "table.cell(rowspan: 2, align: left + bottom)[Paper], "
         f"table.cell(colspan: {len(_AUDIT)})[Equations audited], "
         f"table.cell(colspan: {len(_NUMBERS)})[Published numbers], "
-        f"table.cell(colspan: {len(_CLAIMS)})[Claims]"
+        f"table.cell(colspan: {len(_CLAIMS)})[Claims], "
+        f"table.cell(colspan: {len(_CHECKS)})[Self-checks]"
     )
-    words = (*_AUDIT, *_NUMBERS, *_CLAIMS)
+    words = (*_AUDIT, *_NUMBERS, *_CLAIMS, *_CHECKS)
     differs = words.index("differs")
     failing = {i for i, w in enumerate(words) if w in ("not_reproduced", "not_upheld")}
-    sub = [word(w) for w in (*_AUDIT, *_NUMBERS, *_CLAIMS)]
+    sub = [word(w) for w in words]
     head2 = ", ".join("[" + escape(s).replace(" ", " \\ ") + "]" for s in sub)
     body = []
     for row in rows:
         cells = [str(row.audit.get(k, 0)) for k in _AUDIT]
         cells += [str(row.numbers.get(k, 0)) for k in _NUMBERS]
         cells += [str(row.claims.get(k, 0)) for k in _CLAIMS]
+        cells += [str(row.self_checks.get(k, 0)) for k in _CHECKS]
         errors = int(row.differs.get("paper_error", 0))
         classified = any(n for k, n in row.differs.items() if k)
         shown = []
@@ -75,7 +77,9 @@ def _counts(r: BlockRenderer, rows: list[ScoreRow]) -> str:
         body.append(f"[{r.anchor_link(row.anchor, row.title)}], " + ", ".join(shown))
     return (
         "#text(size: 8pt, table(\n"
-        f"  columns: (1fr,) + (auto,) * {len(words)},\n"
+        # the paper's title gets a fixed share; the counts split the rest (with four groups,
+        # auto-width counts would squeeze the title to a word a line)
+        f"  columns: (3.6cm,) + (1fr,) * {len(words)},\n"
         "  align: (x, y) => if x == 0 { left } else { center },\n"
         "  fill: (x, y) => if y < 2 { headfill },\n"
         f"  table.header({head1}, {head2}),\n  " + ",\n  ".join(body) + ",\n))"

@@ -21,6 +21,7 @@ from __future__ import annotations
 import re
 
 __all__ = [
+    "ROW_ID",
     "CAUSE_SHORT_WORDS",
     "CAUSE_WORDS",
     "DIFFERS_WORDS",
@@ -35,6 +36,10 @@ __all__ = [
     "tone",
     "word",
 ]
+
+#: the one column header under which a report shows verdict-row ids (``T9.psi.A3``,
+#: ``C2/proposed_simulated``), for cross-reference with verdicts.csv; nowhere else
+ROW_ID = "row id"
 
 #: verdict and status tokens -> the words shown
 WORDS = {

@@ -36,6 +36,7 @@ from pipeline.verdicts.cause import cause_columns
 from pipeline.verdicts.claims import ClaimRegistry, ClaimResult
 from pipeline.verdicts.kinds import Found, consistency_note, judge, shown_unit
 from pipeline.verdicts.published import ItemCheck, load_published
+from pipeline.verdicts.reading import with_axis
 
 __all__ = ["Locate", "claim_rows", "item_rows", "verdict_table", "write_verdicts"]
 
@@ -113,7 +114,7 @@ def verdict_table(
     """Every verdict row of a validated published file: items first, then claims."""
     rows: list[dict[str, str]] = []
     for item in published["items"]:
-        rows += item_rows(item, locate(item, results))
+        rows += item_rows(with_axis(item, published.get("figures")), locate(item, results))
     for claim in published["claims"]:
         rows += claim_rows(claim, claims.evaluate(claim["predicate"], results))
     table = pd.DataFrame(rows, columns=VERDICT_FILE_COLUMNS)

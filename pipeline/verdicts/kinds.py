@@ -8,9 +8,13 @@ exact
     or ``rel``, ``applies_to: value`` or ``applies_to: error_pct``) with its reason, where the printed digits
     mean exactly (a printed 0 % of an exact inversion). ``reproduced`` / ``not_reproduced``.
 approximate
-    A value read off a plot or printed as "about": |ours - published| <= the stated tolerance
-    (``abs``, or ``rel`` x |published|) plus two standard errors of ours when ours is itself a
-    Monte Carlo estimate (0 for a deterministic value). ``reproduced`` / ``not_reproduced``.
+    A value read off a plot or printed as "about": |ours - published| <= the tolerance its
+    printed form gives (``printed_as``, one rule for every paper, :mod:`pipeline.verdicts.reading`:
+    "about X" -> max(one unit of the last significant digit, 10 % of |X|); read off a plot ->
+    max(half a tick of the figure's axis, stated once per figure, one unit of the printed
+    digit)), plus two standard errors of ours when ours is itself a Monte Carlo estimate (0 for
+    a deterministic value). No item states its own tolerance. ``reproduced`` /
+    ``not_reproduced``.
 statistical
     Where the published value falls in our Monte Carlo distribution: its percentile rank
     100 (#{trials < v} + #{trials = v} / 2) / n; ``consistent`` if the rank lies in
@@ -46,6 +50,7 @@ from pipeline.verdicts.printed import (
     half_unit,
     unit,
 )
+from pipeline.verdicts.reading import fmt_limit, limit
 
 __all__ = [
     "NOISE_FREE_AGREES",
@@ -152,8 +157,8 @@ def stated_tolerance(item: Mapping[str, Any]) -> str:
     >>> stated_tolerance({"kind": "exact", "quantity": "x", "value": "88"})
     'value: the printed digits of 88 (rounding: +-0.5; truncation: [88, +1))'
     >>> stated_tolerance({"kind": "approximate", "quantity": "x", "value": "4.5",
-    ...                   "tolerance": {"rel": 0.2, "reason": "a plot"}})
-    '+-20% of 4.5 (a plot), + 2 SE when ours is a Monte Carlo estimate'
+    ...                   "printed_as": "about"})
+    "+-0.45 (printed as 'about 4.5': one unit of its last significant digit (0.1) or 10% of it (0.45), the larger), + 2 SE when ours is a Monte Carlo estimate"
     """
     kind = item["kind"]
     if kind == "exact":
@@ -163,10 +168,8 @@ def stated_tolerance(item: Mapping[str, Any]) -> str:
             if item.get(field) is not None
         )
     if kind == "approximate":
-        tol, printed = item["tolerance"], item["value"]
-        share = f"{tol['rel']:.0%} of {printed}" if "rel" in tol else f"{_g(float(tol['abs']))}"
-        u = shown_unit(item)
-        return f"+-{share}{u} ({tol['reason']}), + 2 SE when ours is a Monte Carlo estimate"
+        stated, rule = limit(item)
+        return f"+-{fmt_limit(stated)}{shown_unit(item)} ({rule}), + 2 SE when ours is a Monte Carlo estimate"
     return f"percentile rank in [{RANK_BAND[0]}, {RANK_BAND[1]}] of the Monte Carlo trials"
 
 
@@ -216,15 +219,16 @@ def _exact(item: Mapping[str, Any], found: Found) -> Judged:
 
 
 def _approximate(item: Mapping[str, Any], found: Found) -> Judged:
-    printed, tol = item["value"], item["tolerance"]
+    printed = item["value"]
     published = float(printed)
-    stated = float(tol["abs"]) if "abs" in tol else float(tol["rel"]) * abs(published)
+    stated, rule = limit(item)
     se = float(found.standard_error)
     allowed = stated + 2.0 * se
     u = shown_unit(item)
-    share = f"{tol['rel']:.0%} of {printed}" if "rel" in tol else f"{_g(stated)}"
-    tolerance = f"+-{share}{u}" + (f" + 2 SE ({_g(se)}) = +-{_g(allowed)}{u}" if se else "")
-    tolerance += f" ({tol['reason']})"
+    tolerance = f"+-{fmt_limit(stated)}{u}" + (
+        f" + 2 SE ({_g(se)}) = +-{fmt_limit(allowed)}{u}" if se else ""
+    )
+    tolerance += f" ({rule})"
     if found.value is None:
         return _missing("no reproduced value", item)
     ours = float(found.value)

@@ -8,6 +8,12 @@ the verdict rows that bear on it); the mark is computed from those rows of ``ver
 * ``[¬Re]`` when any matched row is not reproduced or not upheld;
 * not checkable otherwise (a row not checkable, and none fails).
 
+A claim judged on several curves or averaging counts has one row per variant
+(``<id>/<variant>``); it holds only if it holds on every variant that bears on it. So a main
+claim that holds where its rows can be resolved but is unresolved on another variant of the
+same claim is not checkable, never ``[Re]``: the unresolved siblings of every matched variant
+row are judged with it (:func:`bearing_rows`), even when ``rows`` names one variant only.
+
 A ``rows`` entry is either an id of the file (an item or claim id, which matches its row and
 the rows of its variants ``<id>/<curve>``), an id with a variant (``C2.x/proposed_simulated``:
 that row only) or a prefix ending with ``.`` (``T9.``: every row whose id starts with it).
@@ -18,6 +24,11 @@ that row only) or a prefix ending with ``.`` (``T9.``: every row whose id starts
 (True, True)
 >>> mark(["reproduced", "upheld"]), mark(["reproduced", "not_upheld"]), mark(["not_checkable"])
 ('Re', 'not_Re', 'not_checkable')
+>>> mark(["upheld", "upheld", "not_checkable"])  # holds where resolved, unresolved elsewhere
+'not_checkable'
+>>> ids = ["C7/N=1", "C7/N=1e6", "T1"]
+>>> bearing_rows(["C7/N=1e6"], ids, {"C7/N=1": "not_checkable", "C7/N=1e6": "upheld"})
+['C7/N=1', 'C7/N=1e6']
 """
 
 from __future__ import annotations
@@ -31,6 +42,7 @@ __all__ = [
     "MARKS",
     "PASSING",
     "MainClaimResult",
+    "bearing_rows",
     "check_main_claims",
     "entry_matches",
     "judge_main_claims",
@@ -55,6 +67,26 @@ def entry_matches(entry: str, row_id: str) -> bool:
 def matched_rows(entries: Sequence[str], row_ids: Iterable[str]) -> list[str]:
     """The row ids (in their order) that any of ``entries`` names."""
     return [r for r in row_ids if any(entry_matches(e, r) for e in entries)]
+
+
+def _base(row_id: str) -> str:
+    return row_id.split("/", 1)[0]
+
+
+def bearing_rows(
+    entries: Sequence[str], row_ids: Sequence[str], verdict_of: Mapping[str, str]
+) -> list[str]:
+    """The rows a main claim is judged on, in file order: those ``entries`` name, and every
+    not-checkable sibling ``<id>/<other variant>`` of a matched variant row (a claim that is
+    unresolved on one of its variants is unresolved, whichever variant ``rows`` names)."""
+    named = set(matched_rows(entries, row_ids))
+    bases = {_base(r) for r in named if "/" in r}
+    return [
+        r
+        for r in row_ids
+        if r in named
+        or ("/" in r and _base(r) in bases and verdict_of.get(r) not in (*PASSING, *FAILING))
+    ]
 
 
 def mark(verdicts: Sequence[str]) -> str:
@@ -140,7 +172,7 @@ def judge_main_claims(
                     f"'rows[{j}]': bad value {entry!r}; allowed: a verdict row id of "
                     "verdicts.csv or an id prefix ending with '.' (no row matches)"
                 )
-        rows = matched_rows(claim["rows"], row_ids)
+        rows = bearing_rows(claim["rows"], row_ids, verdict_of)
         verdicts = tuple(verdict_of[r] for r in rows)
         out.append(
             MainClaimResult(

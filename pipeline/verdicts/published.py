@@ -36,6 +36,7 @@ import jsonschema
 
 from pipeline.config import ConfigError, load_schema, load_yaml
 from pipeline.verdicts.main_claims import check_main_claims
+from pipeline.verdicts.reading import check_reading
 
 __all__ = [
     "SCHEMA_NAME",
@@ -103,8 +104,12 @@ def describe_error(err: jsonschema.ValidationError, rest: Sequence[Any]) -> Prob
         missing = [k for k in expected if k not in instance]
         key = missing[0] if missing else "?"
         why = ""
-        if key == "tolerance" and instance.get("kind"):
-            why = f" for kind {instance['kind']!r} (an approximate item states its tolerance)"
+        if key == "printed_as" and instance.get("kind"):
+            why = (
+                f" for kind {instance['kind']!r} (an approximate item says how the paper printed "
+                "it, which sets its tolerance: printed_as 'about' for a value printed as 'about "
+                "X', 'plot' for a value read off a figure, with figure: {label, axis})"
+            )
         return (
             f"{field}.{key}" if field else key,
             "missing",
@@ -125,7 +130,12 @@ def describe_error(err: jsonschema.ValidationError, rest: Sequence[Any]) -> Prob
     elif validator == "oneOf":
         allowed = "exactly one of 'abs' or 'rel'"
     elif validator == "not":
-        allowed = "no 'tolerance' for a statistical item (its rule is the percentile band)"
+        allowed = (
+            "no 'tolerance' for an approximate item (its printed_as sets it, one rule for every "
+            "paper)"
+            if isinstance(instance, Mapping) and instance.get("kind") == "approximate"
+            else "no 'tolerance' for a statistical item (its rule is the percentile band)"
+        )
         instance = instance.get("tolerance") if isinstance(instance, Mapping) else instance
         field = f"{field}.tolerance" if field else "tolerance"
     elif validator in _SIGNS:
@@ -224,6 +234,18 @@ def check_published(
                     "only with a printed error_pct",
                 )
             )
+        if item.get("printed_as") is not None and item["kind"] != "approximate":
+            problems.append(
+                _line(
+                    filename,
+                    where,
+                    "printed_as",
+                    item["printed_as"],
+                    "only on an approximate item (exact and statistical have their own rules)",
+                )
+            )
+        for field, value, allowed in check_reading(item, data.get("figures")):
+            problems.append(_line(filename, where, field, value, allowed))
         if check_item is not None:
             for field, value, allowed in check_item(item):
                 problems.append(_line(filename, where, field, value, allowed))

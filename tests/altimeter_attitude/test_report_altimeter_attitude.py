@@ -38,6 +38,7 @@ from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
 from pipeline.report import html as H
 from pipeline.report.model import Bullets, ReportInputs
 from pipeline.report.page_html import render_page
+from pipeline.report.plain import plain_value
 from pipeline.scenarios import scenario_names
 
 REPO = Path(__file__).resolve().parents[2]
@@ -367,7 +368,7 @@ def test_verdict_and_audit_counts_equal_the_csv(built):
             w.replace(" ", "_"): int(n) for n, w in re.findall(r"(\d+) ([a-z ]+)", tail)
         }
     for item in counts.items:  # every count is on the page
-        assert H.escape(item) in section_html(built["text"], "summary")
+        assert H.escape(item) in section_html(built["text"], "summary-overview")
     for group in expected:
         assert {k: v for k, v in shown[group].items() if v} == dict(expected[group]), group
     # the standard words are shown even at zero
@@ -402,7 +403,7 @@ def test_headline_reads_published_and_ours(built):
     verdicts = pd.read_csv(built["results"] / "verdicts.csv", dtype=str, keep_default_na=False)
     summary = pd.read_csv(built["results"] / "paper" / "rms_summary.csv").set_index("filter")
     windows = pd.read_csv(built["results"] / "paper" / "window_summary.csv")
-    summary_sec = plain(section_html(built["text"], "summary"))
+    summary_sec = plain(section_html(built["text"], "summary-overview"))
     # the headline table is with the results (an appendix), its sentence in the summary
     sec = plain(section_html(built["text"], "results"))
     assert "Published RMS errors" not in summary_sec
@@ -412,7 +413,8 @@ def test_headline_reads_published_and_ours(built):
         ours = fmt3(w.iloc[0][r.quantity])
         if window == "flight":  # window_summary.csv repeats rms_summary.csv for the flight
             assert ours == fmt3(summary.at[r.method, r.quantity])
-        assert f"<td>{H.escape(r.id)}</td><td>{r.method}</td><td>{window}</td>" in sec
+        # the row is named by its filter, window and quantity (no internal id)
+        assert f"<td>{r.method}</td><td>{window}</td><td>{r.quantity}</td>" in sec
         assert f"<td>{H.escape(r.published)}</td>" in sec
         assert f"<td>{ours}</td>" in sec, (r.id, ours)
     lkf = "/".join(fmt3(summary.at["linear_kf", f"{a}_rms_deg"]) for a in ("roll", "pitch"))
@@ -524,7 +526,7 @@ def test_assumptions_show_each_decision_with_its_value(built):
         sub = section_html(sec, f"assumptions-{H.slugify(f.stem)}")
         assert H.escape(str(sc.raw["description"]).strip()) in sub
         for d in sc.decisions():
-            v = d["value"] if isinstance(d["value"], str) else json.dumps(d["value"])
+            v = plain_value(d["value"])  # plain text, no JSON
             assert f"<td>{H.escape(d['field'])}</td><td>{H.escape(v)}</td>" in sub, d["field"]
 
 

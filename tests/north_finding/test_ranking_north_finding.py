@@ -194,7 +194,7 @@ ABOUT = {
     "value": "22",
     "unit": "%",
     "kind": "approximate",
-    "tolerance": {"rel": 0.1, "reason": "about"},
+    "printed_as": "about",
 }
 
 
@@ -224,7 +224,7 @@ def test_statistical_rows_state_their_power_in_percent_error() -> None:
     )
     item = {**ABOUT, "id": "T3", "label": "Table 3", "quantity": "acc_bias_ug", "unit": "ug",
             "value": "77.4", "kind": "statistical"}  # fmt: skip
-    del item["tolerance"]
+    del item["printed_as"]
     res = results(mc_trials=trials, estimates=real_rows({("L5", "acc_bias_ug"): -27.0}, 100.0))
     row = table(res, items=[item]).loc["T3"]
     lo, hi = np.percentile(sample, [0.5, 99.5]) - 100.0

@@ -148,7 +148,7 @@ def test_analytic_curve_not_checkable_where_the_vehicle_moves():
             ("ch1", "proposed_simulated"): 99 + T,
         }
     )
-    item = _item("2000", "crossover_s", "s", 0.2)
+    item = _item("2000", "crossover_s", "s")
     claim = _claim("final_order", scenario="st", case="ch1", reference="strapdown", expect="reference_above")  # fmt: skip
     published = _published([claim], [item])
     at_rest = verdicts(published, _at_rest(errors)).set_index("id")
@@ -227,7 +227,7 @@ def test_close_to_an_oscillating_reference_relative_to_its_max():
     assert verdicts(_published([pointwise]), _at_rest(errors))["verdict"].tolist() == ["not_upheld"]
 
 
-def _item(value: str = "4.5", quantity: str = "error_2h_m", unit: str = "km", rel: float = 0.1):
+def _item(value: str = "4.5", quantity: str = "error_2h_m", unit: str = "km"):
     return {
         "id": "I",
         "label": "Fig. 5 (3)",
@@ -236,7 +236,7 @@ def _item(value: str = "4.5", quantity: str = "error_2h_m", unit: str = "km", re
         "value": value,
         "unit": unit,
         "select": {"scenario": "st", "case": "ch3", "scheme": "strapdown"},
-        "tolerance": {"rel": rel, "reason": "read off the plot"},
+        "printed_as": "about",
     }
 
 
@@ -259,12 +259,12 @@ def test_crossover_item_one_row_per_proposed_curve():
             ("ch3", "proposed_simulated"): 1e-4 * T**2 + 50.0,  # never crossed
         }
     )
-    item = _item("2000", "crossover_s", "s", 0.2)
+    item = _item("2000", "crossover_s", "s")
     out = verdicts(_published(items=[item]), _at_rest(errors)).set_index("id")
     assert out.loc["I/proposed_analytic", "verdict"] == "reproduced"
     assert out.loc["I/proposed_simulated", "verdict"] == "not_reproduced"
     assert out.loc["I/proposed_simulated", "reproduced"] == "never"
-    hours = _item("0.55", "crossover_s", "h", 0.2)  # the same crossover printed in hours
+    hours = _item("0.55", "crossover_s", "h")  # the same crossover printed in hours
     out = verdicts(_published(items=[hours]), _at_rest(errors)).set_index("id")
     assert out.loc["I/proposed_analytic", "verdict"] == "reproduced"
     assert out.loc["I/proposed_analytic", "reproduced"].endswith(" h")
@@ -274,15 +274,18 @@ def test_repository_file_loads_and_bad_file_names_field(tmp_path):
     data = load_published("config/published/platform_drift.yaml")
     assert len(data["items"]) == 14 and len(data["claims"]) == 11
     assert {i["kind"] for i in data["items"]} == {"approximate"}
-    # a value printed as 'about' says so in its tolerance; one printed without it does not
+    # a value printed as 'about' is printed_as about; one printed without it is read off the
+    # plot, on an axis stated once for its figure
     for item in data["items"]:
         about = "about" in item["note"].replace("(no 'about')", "")
-        assert ("printed as 'about'" in item["tolerance"]["reason"]) == about, item["id"]
+        assert item["printed_as"] == ("about" if about else "plot"), item["id"]
+        if not about:
+            assert item["figure"]["label"] == item["label"] in data["figures"], item["id"]
     bad = tmp_path / "bad.yaml"
     bad.write_text(
         "paper: platform_drift\nitems:\n  - {id: X, label: f, kind: approximate, quantity: error_2h_m,"
         " value: '1', unit: km, select: {scenario: s, case: ch9, scheme: strapdown},"
-        " tolerance: {rel: 0.1, reason: r}}\nclaims: []\n"
+        " printed_as: about}\nclaims: []\n"
     )
     with pytest.raises(ConfigError, match=r"bad\.yaml: item 'X' \(items\[0\]\), field 'select\.case': bad value 'ch9'"):  # fmt: skip
         load_published(bad)

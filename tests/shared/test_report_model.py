@@ -27,7 +27,13 @@ from pipeline.report.model import (
 )
 from pipeline.report.page_html import build_page, page_sections, render_page
 from pipeline.report.paper_parts import load_parts
-from pipeline.report.paper_section import MAIN_TITLES, paper_section, supporting_section
+from pipeline.report.paper_section import (
+    MAIN_TITLES,
+    further_sections,
+    paper_section,
+    supporting_section,
+)
+from tests.shared.test_report_no_ids import html_text
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -194,7 +200,8 @@ def test_page_follows_the_template(inputs, tmp_path):
     assert '<span class="mark m-not-re">[¬Re]</span> The small-angle period formula holds.' in text
     assert '<span class="mark m-re">[Re]</span> Mass does not matter.' in text
     assert "Not reproduced or not upheld (1 verdict): Table 1, the second pendulum." in text
-    assert "T1.b" not in _text(text)  # no internal id
+    # no internal id, but in the row-id column of the per-row tables (cross-reference)
+    assert "T1.b" in _text(text) and "T1.b" not in html_text(out)
     assert "Easy: the period. Hard: nothing." in text  # the paper's discussion
     assert "Ten runs per length." in text  # its supporting results, in an appendix
     assert text.count("data:image/png;base64,") == 1  # the extra figure's file is absent
@@ -222,7 +229,12 @@ def test_paper_section_is_assembled_from_the_papers_parts(inputs):
     assert sec.id == "pendulum"
     assert tuple(s.title for s in sec.subsections) == MAIN_TITLES
     summary, audit, published, claims, figures, findings = sec.subsections
-    assert Paragraph("2 periods.") in summary.blocks
+    # one set of blocks for every paper: the paper's own summary section is not repeated in
+    # the shared Summary (its page keeps it among the paper's own sections)
+    assert Paragraph("2 periods.") not in summary.blocks
+    assert [type(b).__name__ for b in summary.blocks[-2:]] == ["Link", "Link"]
+    own = [s for s in further_sections(parts) if s.id == "pendulum-summary-overview"]
+    assert own and Paragraph("2 periods.") in own[0].blocks
     # the combined report has the marks and sentences at its front; its page in the summary
     assert summary.blocks[0].text.startswith("Partial reproduction; 1 of 2 main claims [Re].")
     page_summary = paper_section(parts, page=True).subsections[0]
@@ -249,7 +261,7 @@ def test_paper_section_is_assembled_from_the_papers_parts(inputs):
     # every verdict row, with how its verdict was reached, is in the appendix
     assert every.title == "Every verdict row"
     row_tables = [b for b in every.blocks if isinstance(b, Table)]
-    assert [t.columns[-1] for t in row_tables] == ["why", "verdict"]
+    assert [t.columns[-2:] for t in row_tables] == [["why", "row id"], ["verdict", "row id"]]
     assert [r[0] for t in row_tables for r in t.rows] == [
         "the first pendulum",
         "the second pendulum",
@@ -345,8 +357,8 @@ def test_published_tables_show_tolerance_and_cause(tmp_path):
     )
     every = published_rows_section("p", verdicts, published)
     (_, row, _) = [t for t in every.blocks if isinstance(t, Table)]
-    assert row.columns[-2:] == ["why", "cause"]
-    assert row.rows[0][3:] == ["+-20% of 1", "not_reproduced", "within the tolerance", "the trajectory is not published"]  # fmt: skip
+    assert row.columns[-3:] == ["why", "cause", "row id"]
+    assert row.rows[0][3:] == ["+-20% of 1", "not_reproduced", "within the tolerance", "the trajectory is not published", "F1"]  # fmt: skip
     # the HTML's last column: the row's note and the cause's full text
     assert row.notes == ["cause: The paper does not publish the trajectory (3 banks in ours)."]
 

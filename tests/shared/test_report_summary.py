@@ -12,6 +12,7 @@ import yaml
 
 from pipeline.config import ConfigError
 from pipeline.report.precision import compact_tolerance, reproduced_header, shown_reproduced
+from pipeline.report.scoreboard import score_row
 from pipeline.report.summary import paper_summary
 from pipeline.report.vocabulary import differs_word, plain_words, tone
 from pipeline.verdicts.main_claims import judge_main_claims, mark
@@ -118,6 +119,71 @@ def test_a_main_claims_mark_follows_its_rows():
         judge_main_claims(
             [{"label": "x", "text": "t", "rows": ["C2/nope"]}], ["C2/a"], ["upheld"], "f"
         )
+
+
+def test_a_main_claim_unresolved_on_some_variants_is_not_checkable_never_re():
+    """A claim that holds where it is resolved (N = 1e6, noise-free) but is not resolved at
+    another N is not checkable, whether the main claim names the claim or one variant of it;
+    a sibling that holds or fails but is not named changes nothing."""
+    ids = ["C7/N=1", "C7/N=1e6", "C7/noise-free", "T1"]
+    held = ["upheld", "upheld", "upheld", "reproduced"]
+    unresolved = ["not_checkable", "upheld", "upheld", "reproduced"]
+    for rows in (["C7"], ["C7/N=1e6"], ["C7/N=1e6", "T1"]):
+        claim = [{"label": "x", "text": "t", "rows": rows}]
+        assert judge_main_claims(claim, ids, held, "f")[0].mark == "Re"
+        result = judge_main_claims(claim, ids, unresolved, "f")[0]
+        assert result.mark == "not_checkable", rows
+        assert result.unchecked == ("C7/N=1",)
+    failing = ["not_upheld", "upheld", "upheld", "reproduced"]
+    claim = [{"label": "x", "text": "t", "rows": ["C7/N=1e6"]}]
+    assert judge_main_claims(claim, ids, failing, "f")[0].mark == "Re"
+
+
+@pytest.mark.parametrize("slug", ["north_finding", "platform_drift", "altimeter_attitude"])
+def test_no_built_main_claim_is_re_while_a_variant_of_its_claims_is_unresolved(slug):
+    """On the built verdicts.csv: a main claim marked [Re] has every row of every claim it
+    names passing (all variants ``<id>/...``), computed here from the csv, not by the rule."""
+    path = ROOT / "results" / slug / "verdicts.csv"
+    if not path.exists():
+        pytest.skip(f"{path} not built")
+    v = pd.read_csv(path, dtype=str, keep_default_na=False)
+    data = load_published(ROOT / "config" / "published" / f"{slug}.yaml")
+    ids, verdicts = list(v["id"]), list(v["verdict"])
+    for result in judge_main_claims(data["main_claims"], ids, verdicts, str(path)):
+        bases = {r.split("/", 1)[0] for r in result.rows}
+        every = [vd for i, vd in zip(ids, verdicts, strict=True) if i.split("/", 1)[0] in bases]
+        if result.mark == "Re":
+            assert all(x in ("reproduced", "consistent", "upheld") for x in every), result.label
+
+
+def test_self_checks_are_counted_apart_from_the_published_numbers(tmp_path):
+    """Rows of items marked self_check (Table 1 here) leave the published-number counts and
+    the scoreboard's number columns, are counted on their own, and a main claim resting on them
+    only says so; an empty self_check is refused at parse with the file, entry and field."""
+    data = {**PUBLISHED, "items": [{**i, "self_check": "ideal sensor"} if i["id"].startswith("T1")
+                                   else i for i in PUBLISHED["items"]]}  # fmt: skip
+    v = _verdicts(T1_b="not_reproduced")
+    s = paper_summary(v, pd.DataFrame({"status": []}), data, "f")
+    assert s.sentences[0].startswith("Reproduced: 1 of 1 published number (all statistical)")
+    assert "counted apart, 1 of 2 self-checks passed (they check our code" in s.sentences[0]
+    assert s.main_claims[0].basis.startswith("it rests on self-checks only")
+    assert s.main_claims[0].basis.endswith(": 1 of 2 self-checks passed")
+    plain = paper_summary(v, pd.DataFrame({"status": []}), PUBLISHED, "f")
+    assert plain.sentences[0].startswith("Reproduced: 2 of 3 published numbers (1 of 2 exact")
+    assert "self-check" not in plain.sentences[0] + plain.main_claims[0].basis
+    audit = pd.DataFrame({"status": ["match"]})
+    row = score_row("demo", "Demo", audit, v, data)
+    assert row.numbers == {
+        "reproduced": 0,
+        "consistent": 1,
+        "not_reproduced": 0,
+        "not_checkable": 0,
+    }
+    assert row.self_checks == {"reproduced": 1, "not_reproduced": 1}
+    assert sum(score_row("demo", "Demo", audit, v, PUBLISHED).numbers.values()) == 3
+    bad = {**data, "items": [{**data["items"][0], "self_check": ""}, *data["items"][1:]]}
+    with pytest.raises(ConfigError, match=r"item 'T1\.a' \(items\[0\]\), field 'self_check'"):
+        load_published(_write(tmp_path, bad))
 
 
 def _caused(v: pd.DataFrame, ids: list[str], kind: str, title: str, detail: str) -> None:

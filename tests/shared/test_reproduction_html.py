@@ -375,14 +375,20 @@ def test_pages_and_report_show_the_same_figures(built):
 # --------------------------------------------------------------------------- 2. the counts
 
 
-def _expected_counts(results: Path, slug: str) -> tuple[dict, dict, dict]:
+def _expected_counts(results: Path, slug: str) -> tuple[dict, dict, dict, dict]:
+    """(audit, published numbers, claims, self-checks) counted from the CSVs; a self-check is
+    a row of an item the published file marks self_check (read here from the yaml)."""
     audit = pd.read_csv(results / slug / "equation_audit.csv", dtype=str, keep_default_na=False)
     verdicts = pd.read_csv(results / slug / "verdicts.csv", dtype=str, keep_default_na=False)
+    published = yaml.safe_load((ROOT / "config" / "published" / f"{slug}.yaml").read_text())
+    marked = {i["id"] for i in published["items"] if i.get("self_check")}
+    is_check = verdicts["id"].str.split("/").str[0].isin(marked)
     is_claim = verdicts["kind"] == "claim"
     return (
         audit["status"].value_counts().to_dict(),
-        verdicts.loc[~is_claim, "verdict"].value_counts().to_dict(),
+        verdicts.loc[~is_claim & ~is_check, "verdict"].value_counts().to_dict(),
         verdicts.loc[is_claim, "verdict"].value_counts().to_dict(),
+        verdicts.loc[is_check, "verdict"].value_counts().to_dict(),
     )
 
 
@@ -405,7 +411,8 @@ def _html_counts(html: str, slug: str) -> dict[str, dict[str, int]]:
 def test_scoreboard_counts_equal_the_csv_counts(built):
     assert [r.slug for r in built.doc.scoreboard] == SLUGS
     for row in built.doc.scoreboard:
-        audit, numbers, claims = _expected_counts(built.root / "results", row.slug)
+        audit, numbers, claims, checks = _expected_counts(built.root / "results", row.slug)
+        assert _nonzero(row.self_checks) == checks, row.slug
         assert _nonzero(row.audit) == audit, row.slug
         assert _nonzero(row.numbers) == numbers, row.slug
         assert _nonzero(row.claims) == claims, row.slug
@@ -413,6 +420,7 @@ def test_scoreboard_counts_equal_the_csv_counts(built):
         assert _nonzero(shown["audit"]) == audit
         assert _nonzero(shown["numbers"]) == numbers
         assert _nonzero(shown["claims"]) == claims
+        assert _nonzero(shown["self_checks"]) == checks
         n_numbers, n_good = (
             sum(numbers.values()),
             numbers.get("reproduced", 0) + numbers.get("consistent", 0),
