@@ -68,6 +68,7 @@ SCENARIO_FILES = (
     "ranking.csv",
     "ranking_pairs.csv",
     "a2_scan.csv",
+    "numerical_trouble.csv",
     "provenance.json",
 )
 #: what the verdicts read from the published scenario's folder

@@ -24,6 +24,7 @@ from pipeline.north_finding.columns import (
     SENSITIVITY_COLUMNS,
     SENSORS,
 )
+from pipeline.north_finding.report_trouble import trouble_blocks
 from pipeline.report.html import format_value, slugify
 from pipeline.report.model import Block, Paragraph, Section, frame_table, not_available
 from pipeline.report.plain import plain_value
@@ -289,6 +290,9 @@ def scenario_section(d: Path) -> Section:
         [
             Section(f"{sid}-estimates", "Estimates (noise-free runs)", estimates),
             Section(f"{sid}-mc", "Monte Carlo summary", mc),
+            Section(
+                f"{sid}-trouble", "Numerical trouble", trouble_blocks(d / "numerical_trouble.csv")
+            ),
             Section(f"{sid}-budget", "Error budget (percent error per error source)", budget),
             Section(f"{sid}-sensitivity", "Sensitivity to averaging", sensitivity),
         ],

@@ -12,6 +12,9 @@ Writes, under ``results/north_finding/<scenario>/`` (columns in pipeline/columns
   ``ranking`` block, for the claims that rank methods (:mod:`pipeline.north_finding.ranking`);
 * ``a2_scan.csv``: the noise-free real-sensor azimuth of method A2 at every whole-degree
   table angle (the paper does not give its tau);
+* ``numerical_trouble.csv``: per run (noise-free real, Monte Carlo, or the readings), method
+  and kind, the trials in which an estimator clipped an argument or gave a non-finite value
+  (:mod:`pipeline.north_finding.trouble`);
 * ``provenance.json``: code version, config hash, packages, seeds.
 
 Ideal sensor: no misalignment and no noise; the scale factor and bias are those of
@@ -40,6 +43,7 @@ from pipeline.north_finding import estimators as est
 from pipeline.north_finding import readings as rd
 from pipeline.north_finding.ranking import ranking_frames
 from pipeline.north_finding.scenario import ROOT, Scenario, load_scenario
+from pipeline.north_finding.trouble import TROUBLE_COLUMNS, Trouble
 
 __all__ = ["run_scenario", "truth_values", "estimates_frame", "main"]
 
@@ -160,7 +164,14 @@ class _Runner:
         self.truth_level = (t["theta"], t["phi"])
         self.psi = t["psi"]
 
-    def run(self, off: tuple[str, ...], normals: np.ndarray | None, n_samples: int, methods=None):
+    def run(
+        self,
+        off: tuple[str, ...],
+        normals: np.ndarray | None,
+        n_samples: int,
+        methods=None,
+        trouble: Trouble | None = None,
+    ):
         sc = self.sc
         methods = methods or sc.methods
         readings = rd.simulate(
@@ -175,6 +186,7 @@ class _Runner:
             self.truth_level,
             prior,
             sc.table["a2_tau_deg"],
+            trouble,
         )
 
 
@@ -190,7 +202,8 @@ def _simulated(sc: Scenario, log) -> dict[str, pd.DataFrame]:
     if calib:
         ideal.update(runner.run(("misalignment", "noise"), None, 1, calib))
     # truth of the ideal runs: the attitude is the same; S and b are the nominal ones
-    real0 = runner.run(("noise",), None, 1)
+    trouble0 = Trouble()
+    real0 = runner.run(("noise",), None, 1, trouble=trouble0)
     estimates = pd.concat(
         [estimates_frame(ideal, truth, "ideal"), estimates_frame(real0, truth, "real")],
         ignore_index=True,
@@ -201,7 +214,8 @@ def _simulated(sc: Scenario, log) -> dict[str, pd.DataFrame]:
     key = scenario_key(sc.name)
     t0 = time.perf_counter()
     normals = rd.standard_normals(sc.seed, key, sc.n_trials, n_pos)
-    mc = runner.run((), normals, sc.n_samples)
+    trouble_mc = Trouble()
+    mc = runner.run((), normals, sc.n_samples, trouble=trouble_mc)
     trials = trials_frame(mc, truth)
     summary = summary_frame(trials)
     log(f"{sc.name}: Monte Carlo {sc.n_trials} trials in {time.perf_counter() - t0:.2f} s")
@@ -254,6 +268,10 @@ def _simulated(sc: Scenario, log) -> dict[str, pd.DataFrame]:
         "ranking": ranking,
         "ranking_pairs": pairs,
         "a2_scan": _a2_scan(sc, runner),
+        "numerical_trouble": pd.concat(
+            [trouble0.frame(real0, "noise_free_real"), trouble_mc.frame(mc, "monte_carlo")],
+            ignore_index=True,
+        ),
     }
 
 
@@ -302,12 +320,21 @@ def _readings(sc: Scenario, log) -> dict[str, pd.DataFrame]:
     rd.check_needs(readings, sc.methods, a2_tau)
     site = est.Site(sc.lat, sc.g, sc.omega_ie)
     level = (sc.truth["theta"], sc.truth["phi"]) if sc.truth else None
+    trouble = Trouble()
     out = est.estimate_all(
-        readings, site, sc.methods, sc.level_source, level, np.array([sc.compass_heading]), a2_tau
+        readings,
+        site,
+        sc.methods,
+        sc.level_source,
+        level,
+        np.array([sc.compass_heading]),
+        a2_tau,
+        trouble,
     )
     log(f"{sc.name}: estimated from {sc.readings_csv.name} ({readings.tau_deg.size} positions)")
     frames = {k: _empty(k) for k in OUTPUTS}
     frames["estimates"] = estimates_frame(out, truth, "real")
+    frames["numerical_trouble"] = trouble.frame(out, "readings")
     return frames
 
 
@@ -320,6 +347,7 @@ OUTPUTS = {
     "ranking": ("ranking.csv", col.RANKING_COLUMNS),
     "ranking_pairs": ("ranking_pairs.csv", col.RANKING_PAIR_COLUMNS),
     "a2_scan": ("a2_scan.csv", col.A2_SCAN_COLUMNS),
+    "numerical_trouble": ("numerical_trouble.csv", TROUBLE_COLUMNS),
 }
 
 

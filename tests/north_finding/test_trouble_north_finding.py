@@ -1,0 +1,99 @@
+"""Numerical trouble of the north-finding estimators is counted, never silent: each clip site
+counts exactly the trials it clipped, a readings run writes the counts, and the page says so."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from pipeline.generated import north_finding as gen
+from pipeline.north_finding import estimators as est
+from pipeline.north_finding import readings as rd
+from pipeline.north_finding.report_trouble import trouble_blocks
+from pipeline.north_finding.run import run_scenario
+from pipeline.north_finding.scenario import ROOT, load_scenario
+from pipeline.north_finding.trouble import TROUBLE_COLUMNS, TROUBLE_KINDS, Trouble
+
+READINGS = ROOT / "config" / "scenarios" / "north_finding" / "example_readings.yaml"
+
+
+def _count(t: Trouble, method: str, kind: str, n: int) -> int:
+    est_ = {(method, "x"): np.zeros(n)}
+    frame = t.frame(est_, "r")
+    return int(frame.loc[frame["kind"] == kind, "n_affected"].iloc[0])
+
+
+def test_arcsine_clips_are_counted_per_trial():
+    t = Trouble()
+    out = est._asin(np.array([0.5, 1.2, -1.0001, 1.0]), t, "L1")
+    assert np.allclose(np.degrees(out), [30.0, 90.0, -90.0, 90.0])
+    assert _count(t, "L1", "clipped_arcsine", 4) == 2  # exactly +-1 is in the domain
+
+
+def test_unreachable_sinusoid_roots_are_counted():
+    t = Trouble()
+    est._two_roots(np.ones(3), np.zeros(3), np.array([0.5, 2.0, -1.5]), t, "A4")
+    assert _count(t, "A4", "unreachable_root", 3) == 2
+
+
+def test_quartic_without_real_root_is_counted():
+    """Method A3 with the measured maximum beyond the reachable one (no real root of eq. 50)
+    falls back to the real parts, and says so; at the true maximum it has a real root."""
+    lat, theta, phi, om = np.radians(35.0), np.radians(30.0), np.radians(50.0), 7.292115e-5
+    reachable = om  # the x gyro can read at most the whole Earth rate
+    w = np.array([0.9 * reachable, 5.0 * reachable])
+    coeffs = gen.a3_eq47_coeffs(w, om, lat, np.full(2, theta), np.full(2, phi))
+    t = Trouble()
+    est.solve_quartic_psi(coeffs, np.radians(np.full(2, 88.0)), t)
+    assert _count(t, "A3", "complex_roots", 2) == 1
+
+
+def test_readings_run_writes_the_counts_and_a_bad_reading_is_caught(tmp_path):
+    sc = load_scenario(READINGS)
+    run_scenario(sc, tmp_path, log=lambda m: None)
+    frame = pd.read_csv(tmp_path / "numerical_trouble.csv")
+    assert list(frame.columns) == TROUBLE_COLUMNS
+    assert set(frame["kind"]) == set(TROUBLE_KINDS) and set(frame["run"]) == {"readings"}
+    assert frame["n_affected"].sum() == 0  # the shipped (simulated) readings are clean
+    assert "No numerical trouble" in trouble_blocks(tmp_path / "numerical_trouble.csv")[0].text
+
+    # the same readings with the accelerometer scaled past g: levelling's arcsines clip
+    readings = rd.load_readings_csv(sc.readings_csv)
+    loud = dataclasses.replace(readings, accel=readings.accel * 3.0)
+    t = Trouble()
+    out = est.estimate_all(
+        loud,
+        est.Site(sc.lat, sc.g, sc.omega_ie),
+        sc.methods,
+        sc.level_source,
+        None,
+        np.array([sc.compass_heading]),
+        sc.raw.get("a2_tau_deg"),
+        t,
+    )
+    counts = t.frame(out, "readings").set_index(["method", "kind"])["n_affected"]
+    assert counts["L1", "clipped_arcsine"] == 1
+
+
+def test_page_lists_every_method_and_kind_with_trouble(tmp_path):
+    path = tmp_path / "numerical_trouble.csv"
+    pd.DataFrame(
+        [
+            ("monte_carlo", "A3", "complex_roots", 1000, 7),
+            ("monte_carlo", "L1", "non_finite", 1000, 0),
+        ],
+        columns=TROUBLE_COLUMNS,
+    ).to_csv(path, index=False)
+    blocks = trouble_blocks(path)
+    assert "Numerical trouble in Monte Carlo (1000 trials)" in blocks[0].text
+    shown = blocks[1].frame if hasattr(blocks[1], "frame") else None
+    text = repr(blocks[1])
+    assert "7 of 1000" in text and "A3" in text and "L1" not in text, (shown, text)
+
+
+def test_unknown_kind_refused():
+    with pytest.raises(ValueError, match="allowed: clipped_arcsine"):
+        Trouble().mark("L1", "clipped", np.array([True]))
