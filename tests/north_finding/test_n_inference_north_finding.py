@@ -180,7 +180,10 @@ def test_leave_one_out_on_the_model_differs_from_the_full_estimate_where_a_row_p
     row = judged_row(frames, "T10.gyro_bias.A4")
     assert int(row["judged_n_avg"]) != best_n(frames)  # the row pulls the full estimate
     others = profile(
-        frames["n_rows"].pivot(index="id", columns="n_avg", values="log_lik").drop(index=items[k]["id"]).to_numpy(),  # fmt: skip
+        frames["n_rows"]
+        .pivot(index="id", columns="n_avg", values="log_lik")
+        .drop(index=items[k]["id"])
+        .to_numpy(),  # fmt: skip
         np.ones(len(items) - 1, dtype=bool),
     )
     assert int(row["judged_n_avg"]) == GRID[int(np.argmax(others))]
