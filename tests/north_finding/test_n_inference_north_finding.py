@@ -219,3 +219,24 @@ def test_the_papers_own_value_passes_at_its_judged_n_and_a_wrong_one_fails() -> 
     assert verdict(frames, a1) == "consistent"  # the paper's 88.0012 deg
     wrong = {**a1, "value": "88.0100"}  # 0.01 deg off: outside the spread at the judged N
     assert verdict(frames, wrong) == "not_reproduced"
+
+
+def test_the_report_shows_the_inferred_n_and_the_profile(tmp_path) -> None:
+    from pipeline.north_finding.report_n import n_inference_section
+
+    frames = infer(synthetic_items(10000))
+    (tmp_path / "paper").mkdir()
+    for name in ("n_profile", "n_rows"):
+        frames[name].to_csv(tmp_path / "paper" / f"{name}.csv", index=False)
+    section = n_inference_section(tmp_path, "paper", str)
+    best = best_n(frames)
+    text = section.blocks[0].text
+    from pipeline.north_finding.n_inference import fmt_grid
+
+    assert f"All rows together imply N = {fmt_grid(best)} samples" in text
+    table = section.blocks[1]
+    assert [r[0] for r in table.rows] == [fmt_grid(n) for n in GRID]
+    assert [r[-1] for r in table.rows].count("yes") == 1
+    assert table.rows[GRID.index(best)][-1] == "yes"
+    absent = n_inference_section(tmp_path, "missing", str)
+    assert "not available" in str(absent.blocks[0]).lower()
