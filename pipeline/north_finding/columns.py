@@ -88,6 +88,17 @@ N_ROW_COLUMNS = [
     "used",
     "judged_n_avg",
 ]
+# results/<slug>/<scenario>/n_robustness.csv: the inference rerun on the grid ("grid") and on
+# its powers of ten alone ("decades"), at the scenario's contamination and each of
+# contamination_check: the N inferred from all rows, and the statistical rows outside the rank
+# band at their judged N (their count and ids, ";"-separated).
+N_ROBUSTNESS_COLUMNS = [
+    "grid",
+    "contamination",
+    "n_inferred",
+    "n_not_consistent",
+    "not_consistent",
+]
 # results/<slug>/<scenario>/mc_trials_judged.csv: the Monte Carlo trials (as mc_trials.csv) at
 # every grid N some statistical row is judged at.
 MC_JUDGED_COLUMNS = ["n_avg", *MC_TRIAL_COLUMNS]

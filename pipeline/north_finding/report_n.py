@@ -12,7 +12,11 @@ from pathlib import Path
 
 import pandas as pd
 
-from pipeline.north_finding.columns import N_PROFILE_COLUMNS, N_ROW_COLUMNS
+from pipeline.north_finding.columns import (
+    N_PROFILE_COLUMNS,
+    N_ROBUSTNESS_COLUMNS,
+    N_ROW_COLUMNS,
+)
 from pipeline.north_finding.n_inference import consistent_range, fmt_grid
 from pipeline.north_finding.report_results import read_csv
 from pipeline.report.model import Block, Paragraph, Section, frame_table, not_available
@@ -67,6 +71,30 @@ def _rows_table(rows: pd.DataFrame) -> Block:
     return frame_table(pd.DataFrame(out), caption="Where each statistical row is judged")
 
 
+def _robustness(d: Path) -> list[Block]:
+    rob = read_csv(d / "n_robustness.csv", N_ROBUSTNESS_COLUMNS)
+    if rob is None or rob.empty:
+        return []
+    table = pd.DataFrame(
+        {
+            "grid": rob["grid"].map({"grid": "half-decades", "decades": "decades"}),
+            "contamination eps": rob["contamination"].map(lambda x: f"{x:g}"),
+            "N inferred from all rows": rob["n_inferred"].astype(int).map(fmt_grid),
+            "rows not consistent at their judged N": [
+                f"{int(k)}: {str(ids).replace(';', ', ')}" if int(k) else "0"
+                for k, ids in zip(rob["n_not_consistent"], rob["not_consistent"], strict=True)
+            ],
+        }
+    )
+    return [
+        frame_table(
+            table,
+            caption="How much the verdicts rest on the grid and on eps: the inference rerun "
+            "(first row: the scenario's choice)",
+        )
+    ]
+
+
 def n_inference_section(results: Path, scenario: str, shown: Callable[[Path], str]) -> Section:
     """The N inference of the published scenario ``results/<scenario>/``."""
     d = results / scenario
@@ -118,4 +146,5 @@ def n_inference_section(results: Path, scenario: str, shown: Callable[[Path], st
         f"{KS_5PCT:.3f}/sqrt({n_trials}) = {KS_5PCT / math.sqrt(n_trials):.3f} for "
         f"{n_trials} trials at the 5 % level."
     )
-    return Section("n-inference", title, [Paragraph(text), _profile_table(prof), _rows_table(rows)])
+    blocks = [Paragraph(text), _profile_table(prof), _rows_table(rows), *_robustness(d)]
+    return Section("n-inference", title, blocks)

@@ -4,7 +4,8 @@ The Monte Carlo runs at every N of the scenario's ``n_inference.n_avg`` on the m
 Carlo's standard normals (trial k seeded by ``SeedSequence([seed, scenario_key, k])``, as in
 :mod:`pipeline.north_finding.run`), so the grid point equal to ``averaging.n_samples``
 reproduces ``mc_trials.csv`` trial for trial. Writes ``n_profile.csv``, ``n_rows.csv`` and
-``mc_trials_judged.csv`` into the scenario's results folder.
+``mc_trials_judged.csv`` into the scenario's results folder, and ``n_robustness.csv``: the
+inference rerun at every ``contamination_check`` and on the grid's powers of ten alone.
 
 Usage: ``python -m pipeline.north_finding.run_inference --scenario
 config/scenarios/north_finding/paper.yaml --published config/published/north_finding.yaml
@@ -14,13 +15,22 @@ config/scenarios/north_finding/paper.yaml --published config/published/north_fin
 from __future__ import annotations
 
 import argparse
+import math
 import sys
+from functools import cache
 from pathlib import Path
+
+import pandas as pd
 
 from pipeline.atomic import write_csv
 from pipeline.config import ConfigError
 from pipeline.north_finding import readings as rd
-from pipeline.north_finding.columns import MC_JUDGED_COLUMNS, N_PROFILE_COLUMNS, N_ROW_COLUMNS
+from pipeline.north_finding.columns import (
+    MC_JUDGED_COLUMNS,
+    N_PROFILE_COLUMNS,
+    N_ROBUSTNESS_COLUMNS,
+    N_ROW_COLUMNS,
+)
 from pipeline.north_finding.n_inference import fmt_grid, infer_frames
 from pipeline.north_finding.run import _Runner, scenario_key, trials_frame, truth_values
 from pipeline.north_finding.scenario import Scenario, load_scenario
@@ -32,6 +42,7 @@ OUTPUTS = {
     "n_profile": ("n_profile.csv", N_PROFILE_COLUMNS),
     "n_rows": ("n_rows.csv", N_ROW_COLUMNS),
     "mc_trials_judged": ("mc_trials_judged.csv", MC_JUDGED_COLUMNS),
+    "n_robustness": ("n_robustness.csv", N_ROBUSTNESS_COLUMNS),
 }
 
 
@@ -51,12 +62,23 @@ def infer_scenario(
     runner, truth = _Runner(sc), truth_values(sc)
     n_pos = rd.simulation_positions(sc)[0].size
     z = rd.standard_normals(sc.seed, scenario_key(sc.name), sc.n_trials, n_pos)
-    frames = infer_frames(
-        lambda n: runner.run((), z, n),
-        lambda estimates: trials_frame(estimates, truth),
-        items,
-        sc.n_inference["n_avg"],
-        float(sc.n_inference["contamination"]),
+    run = cache(lambda n: runner.run((), z, n))  # every grid N once, for every rerun
+
+    def infer(grid: list[int], eps: float) -> dict:
+        return infer_frames(run, lambda e: trials_frame(e, truth), items, grid, eps)
+
+    grid, eps = list(sc.n_inference["n_avg"]), float(sc.n_inference["contamination"])
+    frames = infer(grid, eps)
+    decades = [n for n in grid if 10 ** round(math.log10(n)) == n]
+    checks = [eps, *sc.n_inference.get("contamination_check", [])]
+    robust = [
+        (name, e, frames if (name, e) == ("grid", eps) else infer(g, e))
+        for name, g in (("grid", grid), ("decades", decades))
+        if len(g) >= 2
+        for e in checks
+    ]
+    frames["n_robustness"] = pd.DataFrame(
+        [(name, e, *_failing(f)) for name, e, f in robust], columns=N_ROBUSTNESS_COLUMNS
     )
     best = frames["n_profile"].loc[frames["n_profile"]["inferred"], "n_avg"]
     judged = sorted(set(frames["n_rows"]["judged_n_avg"]))
@@ -70,6 +92,14 @@ def infer_scenario(
         key: write_csv(out_dir / name, frames[key], columns)
         for key, (name, columns) in OUTPUTS.items()
     }
+
+
+def _failing(frames: dict) -> tuple[int, int, str]:
+    """(N inferred from all rows, count and ids of the rows outside the band at their N)."""
+    prof, rows = frames["n_profile"], frames["n_rows"]
+    at = rows[rows["n_avg"] == rows["judged_n_avg"]]
+    bad = at.loc[~at["in_band"].astype(bool), "id"].tolist()
+    return int(prof.loc[prof["inferred"], "n_avg"].iloc[0]), len(bad), ";".join(bad)
 
 
 def main(argv: list[str] | None = None) -> int:
