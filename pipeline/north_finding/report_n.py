@@ -17,7 +17,7 @@ from pipeline.north_finding.columns import (
     N_ROBUSTNESS_COLUMNS,
     N_ROW_COLUMNS,
 )
-from pipeline.north_finding.n_inference import consistent_range, fmt_grid
+from pipeline.north_finding.n_inference import fmt_grid
 from pipeline.north_finding.report_results import read_csv
 from pipeline.report.model import Block, Paragraph, Section, frame_table, not_available
 
@@ -47,28 +47,6 @@ def _profile_table(prof: pd.DataFrame) -> Block:
         caption="Profile log-likelihood of the paper's statistical rows against N (robust rule; "
         "the plain-Gaussian column shows what the rows our model cannot place would do to it)",
     )
-
-
-def _rows_table(rows: pd.DataFrame) -> Block:
-    grid = sorted(set(rows["n_avg"].astype(int)))
-    where = f"on the grid ({fmt_grid(grid[0])} to {fmt_grid(grid[-1])})"
-    out = []
-    for item_id, g in rows.groupby("id", sort=False):
-        g = g.sort_values("n_avg")
-        n = int(g["judged_n_avg"].iloc[0])
-        at = g[g["n_avg"] == n].iloc[0]
-        out.append(
-            {
-                "row": item_id,
-                "judged at N": fmt_grid(n),
-                "percentile rank there": f"{float(at['rank_pct']):.1f}",
-                where: consistent_range(g["n_avg"].tolist(), g["in_band"].tolist()).replace(
-                    f" {where}", ""
-                ),
-                "in the N inference": "yes" if bool(at["used"]) else "no (no N makes it noise)",
-            }
-        )
-    return frame_table(pd.DataFrame(out), caption="Where each statistical row is judged")
 
 
 def _robustness(d: Path) -> list[Block]:
@@ -146,5 +124,7 @@ def n_inference_section(results: Path, scenario: str, shown: Callable[[Path], st
         f"{KS_5PCT:.3f}/sqrt({n_trials}) = {KS_5PCT / math.sqrt(n_trials):.3f} for "
         f"{n_trials} trials at the 5 % level."
     )
-    blocks = [Paragraph(text), _profile_table(prof), _rows_table(rows), *_robustness(d)]
+    # where each row is consistent on the grid is in its verdict row's notes (the page budget
+    # of the PDF's main part leaves no room for a second per-row table)
+    blocks = [Paragraph(text), _profile_table(prof), *_robustness(d)]
     return Section("n-inference", title, blocks)

@@ -240,3 +240,30 @@ def test_the_report_shows_the_inferred_n_and_the_profile(tmp_path) -> None:
     assert table.rows[GRID.index(best)][-1] == "yes"
     absent = n_inference_section(tmp_path, "missing", str)
     assert "not available" in str(absent.blocks[0]).lower()
+
+
+@pytest.mark.parametrize(
+    ("block", "needles"),
+    [
+        ({"n_avg": [1000, 100, 10000], "contamination": 0.1}, ["n_inference.n_avg", "ascending"]),
+        ({"n_avg": [100, 1000, 10000], "contamination": 1.5}, ["contamination", "1.5"]),
+        ({"n_avg": [100, 1000], "contamination": 0.1}, ["n_avg"]),
+    ],
+)
+def test_a_bad_n_inference_block_is_refused_naming_file_field_and_value(
+    tmp_path, block: dict, needles: list[str]
+) -> None:
+    import yaml
+
+    from pipeline.config import ConfigError
+
+    raw = yaml.safe_load(open(SCENARIO, encoding="utf-8"))
+    raw["n_inference"] = block
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(raw), encoding="utf-8")
+    with pytest.raises(ConfigError) as info:
+        load_scenario(path)
+    message = str(info.value)
+    assert str(path) in message or "bad.yaml" in message
+    for needle in needles:
+        assert needle in message, message
