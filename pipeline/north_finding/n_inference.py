@@ -28,9 +28,11 @@ Profile and leave-one-out
     profile is the sum over the used rows; each row is judged at the argmax of the profile
     without its own term (the first grid N on a tie).
 
-Files (results/north_finding/<published scenario>/): ``n_profile.csv``, ``n_rows.csv`` and
-``mc_trials_judged.csv`` (the trials at every N some row is judged at), columns in
-:mod:`pipeline.north_finding.columns`.
+Files (results/north_finding/<published scenario>/, written by
+:mod:`pipeline.north_finding.run_inference`): ``n_profile.csv``, ``n_rows.csv``,
+``mc_trials_judged.csv`` (the trials at every N some row is judged at) and ``n_robustness.csv``
+(the inference rerun at other contamination probabilities and on the grid's powers of ten),
+columns in :mod:`pipeline.north_finding.columns`.
 
 Three rows, three grid N: all rows together peak at the middle N, but row 2 prefers the first
 so strongly that rows 0 and 1 are each judged at the first N (row 2 and the other one imply it),
