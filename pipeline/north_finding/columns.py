@@ -70,8 +70,9 @@ N_PROFILE_COLUMNS = [
 # the trials (mean, std, KS distance), the published value's percentile rank among the trials,
 # whether it is inside the band, the row's robust log-likelihood, the posterior probability
 # that the row comes from the contamination component (a run the paper does not describe),
-# whether the row is used (not excluded by rule 1), and the N the row is judged at (its
-# leave-one-out N).
+# whether the row is used (not excluded by rule 1), and the row's leave-one-out weight of that
+# N (the likelihood of the other rows, normalised over the grid; the row is judged on the
+# mixture of the trials at every N with these weights).
 N_ROW_COLUMNS = [
     "id",
     "method",
@@ -86,12 +87,12 @@ N_ROW_COLUMNS = [
     "log_lik",
     "outlier_prob",
     "used",
-    "judged_n_avg",
+    "weight",
 ]
 # results/<slug>/<scenario>/n_robustness.csv: the inference rerun on the grid ("grid") and on
 # its powers of ten alone ("decades"), at the scenario's contamination and each of
 # contamination_check: the N inferred from all rows, and the statistical rows outside the rank
-# band at their judged N (their count and ids, ";"-separated).
+# band in their leave-one-out mixture (their count and ids, ";"-separated).
 N_ROBUSTNESS_COLUMNS = [
     "grid",
     "contamination",
@@ -100,7 +101,7 @@ N_ROBUSTNESS_COLUMNS = [
     "not_consistent",
 ]
 # results/<slug>/<scenario>/mc_trials_judged.csv: the Monte Carlo trials (as mc_trials.csv) at
-# every grid N some statistical row is judged at.
+# every grid N to which some statistical row gives weight.
 MC_JUDGED_COLUMNS = ["n_avg", *MC_TRIAL_COLUMNS]
 
 LEVELING_METHODS = ("L1", "L2", "L3", "L4", "L5")

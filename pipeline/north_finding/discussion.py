@@ -26,8 +26,9 @@ def _averaging(inputs: ReportInputs) -> str:
         if set(N_PROFILE_COLUMNS) <= set(p.columns) and p["inferred"].astype(bool).any():
             n = int(p.loc[p["inferred"].astype(bool), "n_avg"].iloc[0])
             return (
-                f"each row judged at the N the other rows imply (all rows: N = {fmt_grid(n)} "
-                "samples per table position, by maximum likelihood)"
+                "each row judged on our Monte Carlo mixed over N with the weights the other rows' "
+                f"likelihood gives (all rows: maximum at N = {fmt_grid(n)} samples per table "
+                "position)"
             )
     path = inputs.scenarios / f"{scenario}.yaml"
     if not path.is_file():

@@ -2,8 +2,9 @@
 
 The paper averages its 5 % white noise "as much as possible" and gives no sample count N, so
 the statistical rows (the real-sensor columns of Tables 1-4 and 9-12) are not judged at an N
-we chose: N is inferred from the printed values themselves, by maximum likelihood over the
-scenario's grid (``n_inference.n_avg``), and each row is judged at the N the *other* rows imply.
+we chose: N is inferred from the printed values themselves, by likelihood over the scenario's
+grid (``n_inference.n_avg``), and each row is judged on our Monte Carlo mixed over the grid N
+with the weights the *other* rows' likelihood gives (a leave-one-out posterior predictive check).
 
 Likelihood of one row at one grid N
     Our Monte Carlo at N (the main Monte Carlo's standard normals, seeds per trial) gives the
@@ -21,29 +22,32 @@ Robust rule
     from a run the paper does not describe, taken as our model at the grid's smallest N (the
     widest spread the grid considers): ``L = (1 - eps) p(N) + eps p(N_min)``. A row our model
     cannot place at N then costs at most log(1/eps) nats, so no single row drags the estimate.
-Profile and leave-one-out
+Profile and leave-one-out posterior predictive check
     The rows are treated as independent (a composite likelihood: rows that share readings are
     correlated, which leaves the maximiser's expectation in place but would overstate a
-    confidence interval, so none is claimed; the grid step is the stated resolution). The
-    profile is the sum over the used rows; each row is judged at the argmax of the profile
-    without its own term (the first grid N on a tie).
+    confidence interval, so none is claimed). The profile is the sum over the used rows. Each
+    row is judged on its leave-one-out posterior predictive distribution: weights over the grid
+    w_N proportional to exp(profile of the OTHER used rows at N) (a flat prior over log10 N on
+    the grid; weights below :data:`MIN_WEIGHT` set to 0, the rest renormalised), and the
+    mixture over N of our Monte Carlo trials at N with those weights. The published value's
+    percentile rank in it is sum_N w_N rank_N (:func:`mixture_rank`); consistent inside the
+    rank band. A flat profile thus spreads the weight over the N it cannot tell apart, and a
+    row is not failed on the strength of a near-tie between them.
 
 Files (results/north_finding/<published scenario>/, written by
 :mod:`pipeline.north_finding.run_inference`): ``n_profile.csv``, ``n_rows.csv``,
-``mc_trials_judged.csv`` (the trials at every N some row is judged at) and ``n_robustness.csv``
+``mc_trials_judged.csv`` (the trials at every N some row gives weight) and ``n_robustness.csv``
 (the inference rerun at other contamination probabilities and on the grid's powers of ten),
 columns in :mod:`pipeline.north_finding.columns`.
 
 Three rows, three grid N: all rows together peak at the middle N, but row 2 prefers the first
-so strongly that rows 0 and 1 are each judged at the first N (row 2 and the other one imply it),
-and row 2 itself at the middle N (what rows 0 and 1 imply). Without row 2, the middle N:
+so strongly that rows 0 and 1 put most of their weight there (row 2 and the other one), and
+row 2 nearly all of its weight on the middle N (what rows 0 and 1 imply):
 
 >>> ll = np.log(np.array([[0.1, 0.5, 0.2], [0.1, 0.45, 0.4], [0.9, 0.05, 0.01]]))
 >>> every = np.array([True, True, True])
->>> int(np.argmax(profile(ll, every))), leave_one_out(ll, every).tolist()
-(1, [0, 0, 1])
->>> leave_one_out(ll, np.array([True, True, False])).tolist()
-[1, 1, 1]
+>>> int(np.argmax(profile(ll, every))), loo_weights(ll, every).round(3).tolist()
+(1, [[0.773, 0.193, 0.034], [0.769, 0.214, 0.017], [0.032, 0.714, 0.254]])
 """
 
 from __future__ import annotations
@@ -61,12 +65,19 @@ from pipeline.north_finding.columns import MC_JUDGED_COLUMNS, N_PROFILE_COLUMNS,
 from pipeline.verdicts.kinds import RANK_BAND, percentile_rank
 from pipeline.verdicts.printed import unit
 
+#: Leave-one-out weights below this are set to 0 (and the rest renormalised): a grid N that
+#: carries less moves a percentile rank by less than 1e-4 and its trials need not be stored.
+MIN_WEIGHT = 1e-6
+
 __all__ = [
+    "MIN_WEIGHT",
     "consistent_range",
     "fmt_grid",
     "infer_frames",
     "interval_log_prob",
-    "leave_one_out",
+    "loo_weights",
+    "mixture_rank",
+    "posterior_range",
     "mixture_log_lik",
     "printed_interval",
     "profile",
@@ -131,14 +142,66 @@ def profile(log_lik: np.ndarray, used: np.ndarray) -> np.ndarray:
     return log_lik[np.asarray(used, dtype=bool)].sum(axis=0)
 
 
-def leave_one_out(log_lik: np.ndarray, used: np.ndarray) -> np.ndarray:
-    """For each row, the grid index maximising the profile of the OTHER used rows."""
+def loo_weights(log_lik: np.ndarray, used: np.ndarray) -> np.ndarray:
+    """Rows x grid: each row's weights over the grid, proportional to exp(profile of the OTHER
+    used rows) (flat prior over the grid), those below :data:`MIN_WEIGHT` set to 0.
+
+    >>> loo_weights(np.log(np.array([[0.5, 0.5], [0.2, 0.8]])), np.array([True, True])).round(9)
+    array([[0.2, 0.8],
+           [0.5, 0.5]])
+    """
     used = np.asarray(used, dtype=bool)
     total = profile(log_lik, used)
-    out = np.empty(log_lik.shape[0], dtype=int)
+    out = np.empty(log_lik.shape, dtype=float)
     for i in range(log_lik.shape[0]):
-        out[i] = int(np.argmax(total - log_lik[i] if used[i] else total))
+        others = total - log_lik[i] if used[i] else total
+        w = np.exp(others - np.max(others))
+        w /= w.sum()
+        w[w < MIN_WEIGHT] = 0.0
+        out[i] = w / w.sum()
     return out
+
+
+def mixture_rank(weights: np.ndarray, ranks: np.ndarray) -> np.ndarray:
+    """The percentile rank in the weighted mixture: sum over the grid of w_N rank_N (per row).
+
+    >>> mixture_rank(np.array([[0.5, 0.5, 0.0]]), np.array([[50.0, 99.9, 100.0]])).tolist()
+    [74.95]
+    """
+    return np.where(weights > 0, weights * ranks, 0.0).sum(axis=-1)
+
+
+def posterior_range(
+    n_avg: Sequence[int], weights: Sequence[float], mass: float = 0.9, heaviest: bool = True
+) -> str:
+    """The grid N holding ``mass`` of the weight (heaviest first, the smaller N on a tie), in
+    words, with the heaviest N unless ``heaviest`` is False.
+
+    >>> posterior_range([100, 1000, 10000, 100000], [0.05, 0.5, 0.4, 0.05])
+    '90 % of the weight on N from 1e3 to 1e4 (most on 1e3: 0.50)'
+    >>> posterior_range([100, 1000, 10000, 100000], [0.05, 0.5, 0.4, 0.05], heaviest=False)
+    '90 % of the weight on N from 1e3 to 1e4'
+    >>> posterior_range([100, 1000], [0.0, 1.0])
+    '90 % of the weight on N = 1e3 (1.00)'
+    """
+    n, w = [int(x) for x in n_avg], [float(x) for x in weights]
+    order = sorted(range(len(n)), key=lambda k: (-w[k], k))
+    held, acc = [], 0.0
+    for k in order:
+        held.append(k)
+        acc += w[k]
+        if acc >= mass - 1e-12:
+            break
+    lo, hi, top = min(held), max(held), order[0]
+    pct = f"{100 * mass:.0f} % of the weight"
+    if lo == hi:
+        return f"{pct} on N = {fmt_grid(n[lo])}" + (f" ({w[lo]:.2f})" if heaviest else "")
+    where = f"N from {fmt_grid(n[lo])} to {fmt_grid(n[hi])}"
+    if hi - lo + 1 != len(held):
+        where += f" (grid points {', '.join(fmt_grid(n[k]) for k in sorted(held))})"
+    return f"{pct} on {where}" + (
+        f" (most on {fmt_grid(n[top])}: {w[top]:.2f})" if heaviest else ""
+    )
 
 
 def consistent_range(n_avg: Sequence[int], in_band: Sequence[bool]) -> str:
@@ -201,7 +264,7 @@ def infer_frames(
     outlier = np.exp(np.log(eps) + log_p[:, :1] - log_lik)
     robust, plain = profile(log_lik, used), profile(log_p, used)
     best = int(np.argmax(robust))
-    judged = leave_one_out(log_lik, used)
+    weights = loo_weights(log_lik, used)
     rows = [
         (
             item["id"],
@@ -215,7 +278,7 @@ def infer_frames(
             log_lik[i, k],
             outlier[i, k],
             bool(used[i]),
-            grid[judged[i]],
+            weights[i, k],
         )
         for i, item in enumerate(items)
         for k, n in enumerate(grid)
@@ -232,7 +295,7 @@ def infer_frames(
             "inferred": [k == best for k in range(len(grid))],
         }
     )
-    judged_n = sorted({grid[j] for j in judged})
+    judged_n = [n for k, n in enumerate(grid) if (weights[:, k] > 0).any()]
     parts = [trials(estimates[n]).assign(n_avg=n) for n in judged_n]
     mc = pd.concat(parts, ignore_index=True) if parts else pd.DataFrame(columns=MC_JUDGED_COLUMNS)
     return {

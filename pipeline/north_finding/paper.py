@@ -23,8 +23,8 @@ CITATION = (
 
 _BOX = (
     "Boxes: Monte Carlo distribution of |percent error| of the noisy real sensor at the main "
-    "Monte Carlo's N (averaging.n_samples; the statistical verdicts are judged at the N the "
-    "paper's own values imply, see Findings) "
+    "Monte Carlo's N (averaging.n_samples; the statistical verdicts are judged on a mixture "
+    "over the N the paper's own values imply, see Findings) "
     "(box 25–75 %, whiskers 5–95 %, line median); hollow circle: real sensor without noise; "
     "red diamond: the percent error printed in the paper. Log scale."
 )

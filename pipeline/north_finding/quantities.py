@@ -7,8 +7,9 @@ and ``error_budget.csv``, ``ranking.csv``, ``ranking_pairs.csv`` and ``a2_scan.c
 claims and the causes).
 
 * exact items (ideal sensor) -> the ``ideal`` row of estimates.csv: its estimate and % error;
-* statistical items (real sensor) -> the Monte Carlo estimates at the row's judged N, the N the
-  other rows imply (``mc_trials_judged.csv`` and ``n_rows.csv``,
+* statistical items (real sensor) -> the row's leave-one-out posterior predictive mixture: the
+  Monte Carlo estimates at every grid N, weighted by the likelihood of the other rows at N
+  (``mc_trials_judged.csv`` and ``n_rows.csv``,
   :mod:`pipeline.north_finding.judged_n`; mc_trials.csv where the results hold no N
   inference), with the noise-free ``real`` row of estimates.csv beside them and the test's
   power in % error;
@@ -194,9 +195,17 @@ def _estimate(estimates: pd.DataFrame, sensor: str, method: str, quantity: str) 
     return None if found.empty else found.iloc[0]
 
 
-def _power(sample: np.ndarray, truth: float, published: float) -> str:
-    """The statistical test's power in % error: the band of errors it accepts."""
-    lo, hi = 100.0 * (np.percentile(sample, RANK_BAND) - truth) / abs(truth)
+def _power(
+    sample: np.ndarray, truth: float, published: float, weights: np.ndarray | None = None
+) -> str:
+    """The statistical test's power in % error: the band of errors it accepts (``weights``:
+    per-sample weights of a mixture, weighted percentiles)."""
+    q = (
+        np.percentile(sample, RANK_BAND)
+        if weights is None
+        else np.percentile(sample, RANK_BAND, weights=weights, method="inverted_cdf")
+    )
+    lo, hi = 100.0 * (q - truth) / abs(truth)
     implied = 100.0 * (published - truth) / abs(truth)
     ratio = f", {(hi - lo) / abs(implied):.3g} times the published |error|" if implied else ""
     return (
@@ -246,14 +255,16 @@ def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
     sample = mc["estimate"].to_numpy(dtype=float)
     truth = float(mc["truth"].iloc[0])
     at = judged_at(results, item)
+    weights = None
     if at is not None:
-        sample, cause = at.samples, cause or mixed_n(results, item)
-    power = (_power(sample, truth, float(item["value"])),) if truth else ()
+        sample, weights, cause = at.samples, at.weights, cause or mixed_n(results, item)
+    power = (_power(sample, truth, float(item["value"]), weights),) if truth else ()
     power = (*(at.notes if at is not None else ()), *power)
     return [
         Found(
             method=method,
             samples=sample,
+            weights=weights,
             noise_free=None if real is None else float(real["estimate"]),
             noise_free_error_pct=None if real is None else float(real["error_pct"]),
             truth=truth,

@@ -10,6 +10,7 @@ import math
 from collections.abc import Callable
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 
 from pipeline.north_finding.columns import (
@@ -17,7 +18,7 @@ from pipeline.north_finding.columns import (
     N_ROBUSTNESS_COLUMNS,
     N_ROW_COLUMNS,
 )
-from pipeline.north_finding.n_inference import fmt_grid
+from pipeline.north_finding.n_inference import fmt_grid, posterior_range
 from pipeline.north_finding.report_results import read_csv
 from pipeline.report.model import Block, Paragraph, Section, frame_table, not_available
 
@@ -29,11 +30,13 @@ KS_5PCT = 1.358
 
 def _profile_table(prof: pd.DataFrame) -> Block:
     best = float(prof["log_lik"].max())
+    w = np.exp(prof["log_lik"].to_numpy(dtype=float) - best)
     table = pd.DataFrame(
         {
             "N (samples averaged per position)": prof["n_avg"].map(fmt_grid),
             "log-likelihood (nats)": prof["log_lik"].map(lambda x: f"{x:.1f}"),
             "below the maximum (nats)": (best - prof["log_lik"]).map(lambda x: f"{x:.1f}"),
+            "weight, all rows (flat prior)": [f"{x:.3f}" for x in w / w.sum()],
             "plain Gaussian, eps = 0 (nats)": prof["log_lik_gaussian"].map(
                 lambda x: f"{x:.1f}" if math.isfinite(x) else "-inf"
             ),
@@ -58,7 +61,7 @@ def _robustness(d: Path) -> list[Block]:
             "grid": rob["grid"].map({"grid": "half-decades", "decades": "decades"}),
             "contamination eps": rob["contamination"].map(lambda x: f"{x:g}"),
             "N inferred from all rows": rob["n_inferred"].astype(int).map(fmt_grid),
-            "rows not consistent at their judged N": [
+            "rows not consistent in their leave-one-out mixture": [
                 f"{int(k)}: {str(ids).replace(';', ', ')}" if int(k) else "0"
                 for k, ids in zip(rob["n_not_consistent"], rob["not_consistent"], strict=True)
             ],
@@ -83,7 +86,11 @@ def n_inference_section(results: Path, scenario: str, shown: Callable[[Path], st
         return Section("n-inference", title, [not_available(f"N inference in {shown(d)}")])
     grid = prof["n_avg"].astype(int).tolist()
     best = int(prof.loc[prof["inferred"].astype(bool), "n_avg"].iloc[0])
-    judged = rows.drop_duplicates("id")["judged_n_avg"].astype(int).value_counts().sort_index()
+    ranges: dict[str, list[str]] = {}
+    for item_id, r in rows.groupby("id", sort=False):
+        r = r.sort_values("n_avg")
+        text_range = posterior_range(r["n_avg"].tolist(), r["weight"].tolist(), heaviest=False)
+        ranges.setdefault(text_range.removeprefix("90 % of the weight on "), []).append(item_id)
     n_items, n_trials = rows["id"].nunique(), int(prof["n_trials"].iloc[0])
     excluded = sorted(set(rows.loc[~rows["used"].astype(bool), "id"]))
     small, rest = prof.iloc[0], prof.iloc[1:]
@@ -93,18 +100,23 @@ def n_inference_section(results: Path, scenario: str, shown: Callable[[Path], st
     text = (
         "The paper averages its 5 % white noise 'as much as possible' but gives no number of "
         "samples N, and the spread of every real-sensor value scales as 1/sqrt(N); the "
-        f"{n_items} statistical rows are therefore judged at the N the paper's own printed "
+        f"{n_items} statistical rows are therefore judged against the N the paper's own printed "
         "values imply, not at one we chose. For each row and each N of the grid "
         f"({fmt_grid(grid[0])} to {fmt_grid(grid[-1])}, half-decades), a Gaussian fitted to our "
         "Monte Carlo trials at that N gives the probability of the printed value (every number "
-        "that prints as it); the robust rule and the leave-one-out are the decision "
-        "'n_inference' in the assumptions. All rows together imply "
-        f"N = {fmt_grid(best)} samples averaged per table position; each row is judged at the "
-        "N the other rows imply: "
-        + ", ".join(
-            f"{c} row{'s' if c != 1 else ''} at N = {fmt_grid(int(n))}" for n, c in judged.items()
+        "that prints as it); the robust rule and the leave-one-out posterior predictive check are "
+        "the decision 'n_inference' in the assumptions. All rows together imply "
+        f"N = {fmt_grid(best)} samples averaged per table position (the maximum; the profile "
+        "below shows how flat it is). Each row is judged on the mixture over the grid N of our "
+        "Monte Carlo trials at N, weighted by the likelihood of the other rows at N (flat prior "
+        "over log10 N): its percentile rank is sum_N w_N rank_N. Where 90 % of the weight "
+        "lies: "
+        + "; ".join(
+            f"{where} for {len(ids)} row{'s' if len(ids) != 1 else ''}"
+            + (f" ({', '.join(ids)})" if len(ids) <= 4 else "")
+            for where, ids in sorted(ranges.items(), key=lambda kv: (-len(kv[1]), kv[0]))
         )
-        + f" (at 1 kHz, N = {fmt_grid(best)} is {best / 1000 / 60:.0f} min per table position). "
+        + f" (n_rows.csv, column weight; at 1 kHz, N = {fmt_grid(best)} is {best / 1000 / 60:.0f} min per table position). "
         + (
             f"At N = {fmt_grid(best)} the rows {', '.join(far)} are more likely (posterior > 0.5) "
             "from a run the paper does not describe than from our model: the robust rule bounds "

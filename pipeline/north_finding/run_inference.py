@@ -31,9 +31,11 @@ from pipeline.north_finding.columns import (
     N_ROBUSTNESS_COLUMNS,
     N_ROW_COLUMNS,
 )
+from pipeline.north_finding.judged_n import mixture_rank_of
 from pipeline.north_finding.n_inference import fmt_grid, infer_frames
 from pipeline.north_finding.run import _Runner, scenario_key, trials_frame, truth_values
 from pipeline.north_finding.scenario import Scenario, load_scenario
+from pipeline.verdicts.kinds import RANK_BAND
 
 __all__ = ["OUTPUTS", "infer_scenario", "main"]
 
@@ -81,11 +83,11 @@ def infer_scenario(
         [(name, e, *_failing(f)) for name, e, f in robust], columns=N_ROBUSTNESS_COLUMNS
     )
     best = frames["n_profile"].loc[frames["n_profile"]["inferred"], "n_avg"]
-    judged = sorted(set(frames["n_rows"]["judged_n_avg"]))
+    weighted = sorted(set(frames["mc_trials_judged"]["n_avg"]))
     log(
         f"{sc.name}: N inferred from {len(items)} statistical rows: "
-        f"{', '.join(fmt_grid(int(n)) for n in best)}; rows judged at "
-        f"{', '.join(fmt_grid(int(n)) for n in judged)}"
+        f"{', '.join(fmt_grid(int(n)) for n in best)}; rows judged on mixtures over "
+        f"{', '.join(fmt_grid(int(n)) for n in weighted)}"
     )
     out_dir = Path(out_dir)
     return {
@@ -95,10 +97,12 @@ def infer_scenario(
 
 
 def _failing(frames: dict) -> tuple[int, int, str]:
-    """(N inferred from all rows, count and ids of the rows outside the band at their N)."""
+    """(N inferred from all rows, count and ids of the rows outside the band in their
+    leave-one-out mixture)."""
     prof, rows = frames["n_profile"], frames["n_rows"]
-    at = rows[rows["n_avg"] == rows["judged_n_avg"]]
-    bad = at.loc[~at["in_band"].astype(bool), "id"].tolist()
+    lo, hi = RANK_BAND
+    rank = {i: mixture_rank_of(r) for i, r in rows.groupby("id", sort=False)}
+    bad = [i for i, r in rank.items() if not lo <= r <= hi]
     return int(prof.loc[prof["inferred"], "n_avg"].iloc[0]), len(bad), ";".join(bad)
 
 
