@@ -51,6 +51,59 @@ RANKING_PAIR_COLUMNS = [
 # every whole-degree table angle (the paper does not give its tau).
 A2_SCAN_COLUMNS = ["tau_deg", "psi_deg", "error_deg"]
 
+# results/<slug>/<scenario>/n_profile.csv: per grid N, the profile log-likelihood of the used
+# statistical rows (robust, and with the plain Gaussian, eps = 0, for comparison), how many
+# rows are used and how many lie inside the rank band there, the largest Kolmogorov-Smirnov
+# distance of a Gaussian fit, the Monte Carlo trials per N, and whether N is the
+# maximum-likelihood N of all used rows.
+N_PROFILE_COLUMNS = [
+    "n_avg",
+    "log_lik",
+    "log_lik_gaussian",
+    "n_rows_used",
+    "n_rows_in_band",
+    "max_ks",
+    "n_trials",
+    "inferred",
+]
+# results/<slug>/<scenario>/n_rows.csv: per statistical row and grid N, the Gaussian fitted to
+# the trials (mean, std, KS distance), the published value's percentile rank among the trials,
+# whether it is inside the band, the row's robust log-likelihood, the posterior probability
+# that the row comes from the contamination component (a run the paper does not describe),
+# whether the row is used (not excluded by rule 1), and the row's leave-one-out weight of that
+# N (the likelihood of the other rows, normalised over the grid; the row is judged on the
+# mixture of the trials at every N with these weights).
+N_ROW_COLUMNS = [
+    "id",
+    "method",
+    "quantity",
+    "published",
+    "n_avg",
+    "mean",
+    "std",
+    "ks",
+    "rank_pct",
+    "in_band",
+    "log_lik",
+    "outlier_prob",
+    "used",
+    "weight",
+]
+# results/<slug>/<scenario>/n_robustness.csv: the inference rerun on the grid ("grid") and on
+# its powers of ten alone ("decades"), at the scenario's contamination and each of
+# contamination_check: the N inferred from all rows, and the statistical rows outside the rank
+# band in their leave-one-out mixture (their count and ids, ";"-separated).
+N_ROBUSTNESS_COLUMNS = [
+    "grid",
+    "contamination",
+    "n_inferred",
+    "n_not_consistent",
+    "not_consistent",
+]
+# results/<slug>/<scenario>/mc_trials_judged.csv: the Monte Carlo trials (as mc_trials.csv) at
+# every grid N to which some statistical row gives weight.
+MC_JUDGED_COLUMNS = ["n_avg", *MC_TRIAL_COLUMNS]
+
 LEVELING_METHODS = ("L1", "L2", "L3", "L4", "L5")
 AZIMUTH_METHODS = ("A1c1", "A1c2", "A2", "A3", "A4", "A5", "A6")
 METHODS = LEVELING_METHODS + AZIMUTH_METHODS

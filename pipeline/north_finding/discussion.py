@@ -1,7 +1,7 @@
 """The north_finding part of the report's discussion: what was easy (the ideal-sensor tables),
 what was hard (the real-sensor tables and the printed equations), what the paper left open.
 Every number is read from the results (verdicts.csv, equation_audit.csv, the published
-scenario's mc_summary.csv and sensitivity.csv) or its scenario file."""
+scenario's n_profile.csv, mc_summary.csv and sensitivity.csv) or its scenario file."""
 
 from __future__ import annotations
 
@@ -9,7 +9,8 @@ import numpy as np
 import pandas as pd
 import yaml
 
-from pipeline.north_finding.columns import SENSITIVITY_COLUMNS
+from pipeline.north_finding.columns import N_PROFILE_COLUMNS, SENSITIVITY_COLUMNS
+from pipeline.north_finding.n_inference import fmt_grid
 from pipeline.report.discussion import Results, three_parts
 from pipeline.report.model import Block, ReportInputs
 from pipeline.verdicts import NOISE_FREE_AGREES
@@ -19,6 +20,16 @@ __all__ = ["discussion"]
 
 def _averaging(inputs: ReportInputs) -> str:
     scenario = str(inputs.settings.get("published_scenario", "paper"))
+    prof = inputs.results / scenario / "n_profile.csv"
+    if prof.is_file():
+        p = pd.read_csv(prof)
+        if set(N_PROFILE_COLUMNS) <= set(p.columns) and p["inferred"].astype(bool).any():
+            n = int(p.loc[p["inferred"].astype(bool), "n_avg"].iloc[0])
+            return (
+                "each row judged on our Monte Carlo mixed over N with the weights the other rows' "
+                f"likelihood gives (all rows: maximum at N = {fmt_grid(n)} samples per table "
+                "position)"
+            )
     path = inputs.scenarios / f"{scenario}.yaml"
     if not path.is_file():
         return "an averaging count of our choice"

@@ -22,7 +22,9 @@ CITATION = (
 )
 
 _BOX = (
-    "Boxes: Monte Carlo distribution of |percent error| of the noisy real sensor "
+    "Boxes: Monte Carlo distribution of |percent error| of the noisy real sensor at the main "
+    "Monte Carlo's N (averaging.n_samples; the statistical verdicts are judged on a mixture "
+    "over the N the paper's own values imply, see Findings) "
     "(box 25–75 %, whiskers 5–95 %, line median); hollow circle: real sensor without noise; "
     "red diamond: the percent error printed in the paper. Log scale."
 )
@@ -71,8 +73,13 @@ SCENARIO_FILES = (
     "numerical_trouble.csv",
     "provenance.json",
 )
+#: what the N inference writes into the published scenario's folder
+#: (:mod:`pipeline.north_finding.run_inference`)
+INFERENCE_FILES = ("n_profile.csv", "n_rows.csv", "n_robustness.csv", "mc_trials_judged.csv")
 #: what the verdicts read from the published scenario's folder
 VERDICT_INPUTS = (
+    "n_rows.csv",
+    "mc_trials_judged.csv",
     "estimates.csv",
     "mc_trials.csv",
     "error_budget.csv",
@@ -118,6 +125,17 @@ STEPS = (
         },
     ),
     Step(
+        "infer_n",
+        "pipeline.north_finding.steps:infer_n",
+        inputs=lambda ctx: {
+            **ctx.published_inputs,
+            **ctx.run_inputs(
+                ctx.scenario_file(ctx.settings["published_scenario"]), SCENARIO_SCHEMA
+            ),
+        },
+        outputs=lambda ctx: {f.split(".")[0]: _published(ctx, f) for f in INFERENCE_FILES},
+    ),
+    Step(
         "verdicts",
         "pipeline.north_finding.steps:verdicts",
         inputs=lambda ctx: {
@@ -143,6 +161,7 @@ STEPS = (
     page_step(
         lambda ctx: {
             "scenarios": [f for name in SCENARIO_FILES for f in ctx.per_scenario(name)],
+            "n_inference": [_published(ctx, f) for f in INFERENCE_FILES[:3]],
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
             "scenario_schema": SCENARIO_SCHEMA,
             "figures": _figures(ctx)["png"],

@@ -7,8 +7,12 @@ and ``error_budget.csv``, ``ranking.csv``, ``ranking_pairs.csv`` and ``a2_scan.c
 claims and the causes).
 
 * exact items (ideal sensor) -> the ``ideal`` row of estimates.csv: its estimate and % error;
-* statistical items (real sensor) -> the Monte Carlo estimates of mc_trials.csv, with the
-  noise-free ``real`` row of estimates.csv beside them and the test's power in % error;
+* statistical items (real sensor) -> the row's leave-one-out posterior predictive mixture: the
+  Monte Carlo estimates at every grid N, weighted by the likelihood of the other rows at N
+  (``mc_trials_judged.csv`` and ``n_rows.csv``,
+  :mod:`pipeline.north_finding.judged_n`; mc_trials.csv where the results hold no N
+  inference), with the noise-free ``real`` row of estimates.csv beside them and the test's
+  power in % error;
 * approximate items (a % error the text gives as "about", quantity ``<q>_error_pct``) -> the
   |% error| of the noise-free ``real`` row of ``<q>``, the Monte Carlo beside it.
 
@@ -29,9 +33,11 @@ from pipeline.north_finding.columns import (
     A2_SCAN_COLUMNS,
     ERROR_BUDGET_COLUMNS,
     ESTIMATE_COLUMNS,
+    MC_JUDGED_COLUMNS,
     MC_TRIAL_COLUMNS,
     METHOD_QUANTITIES,
     METHODS,
+    N_ROW_COLUMNS,
     RANKING_COLUMNS,
     RANKING_PAIR_COLUMNS,
     SENSORS,
@@ -78,6 +84,8 @@ OPTIONAL_FILES = {
     "ranking": ("ranking.csv", RANKING_COLUMNS),
     "ranking_pairs": ("ranking_pairs.csv", RANKING_PAIR_COLUMNS),
     "a2_scan": ("a2_scan.csv", A2_SCAN_COLUMNS),
+    "n_rows": ("n_rows.csv", N_ROW_COLUMNS),
+    "mc_trials_judged": ("mc_trials_judged.csv", MC_JUDGED_COLUMNS),
 }
 
 
@@ -187,9 +195,17 @@ def _estimate(estimates: pd.DataFrame, sensor: str, method: str, quantity: str) 
     return None if found.empty else found.iloc[0]
 
 
-def _power(sample: np.ndarray, truth: float, published: float) -> str:
-    """The statistical test's power in % error: the band of errors it accepts."""
-    lo, hi = 100.0 * (np.percentile(sample, RANK_BAND) - truth) / abs(truth)
+def _power(
+    sample: np.ndarray, truth: float, published: float, weights: np.ndarray | None = None
+) -> str:
+    """The statistical test's power in % error: the band of errors it accepts (``weights``:
+    per-sample weights of a mixture, weighted percentiles)."""
+    q = (
+        np.percentile(sample, RANK_BAND)
+        if weights is None
+        else np.percentile(sample, RANK_BAND, weights=weights, method="inverted_cdf")
+    )
+    lo, hi = 100.0 * (q - truth) / abs(truth)
     implied = 100.0 * (published - truth) / abs(truth)
     ratio = f", {(hi - lo) / abs(implied):.3g} times the published |error|" if implied else ""
     return (
@@ -201,6 +217,7 @@ def _power(sample: np.ndarray, truth: float, published: float) -> str:
 def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
     """What the results hold for one published item (one row)."""
     from pipeline.north_finding.causes import for_item
+    from pipeline.north_finding.judged_n import judged_at, mixed_n
 
     method, quantity = item["select"]["method"], item["quantity"]
     estimates, trials = results["estimates"], results["mc_trials"]
@@ -237,11 +254,17 @@ def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
     real = _estimate(estimates, "real", method, quantity)
     sample = mc["estimate"].to_numpy(dtype=float)
     truth = float(mc["truth"].iloc[0])
-    power = (_power(sample, truth, float(item["value"])),) if truth else ()
+    at = judged_at(results, item)
+    weights = None
+    if at is not None:
+        sample, weights, cause = at.samples, at.weights, cause or mixed_n(results, item)
+    power = (_power(sample, truth, float(item["value"]), weights),) if truth else ()
+    power = (*(at.notes if at is not None else ()), *power)
     return [
         Found(
             method=method,
             samples=sample,
+            weights=weights,
             noise_free=None if real is None else float(real["estimate"]),
             noise_free_error_pct=None if real is None else float(real["error_pct"]),
             truth=truth,

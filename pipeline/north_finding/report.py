@@ -27,6 +27,7 @@ from pipeline.north_finding.columns import ERROR_BUDGET_COLUMNS
 from pipeline.north_finding.error_propagation import azimuth_error_budget, noise_free_agreement
 from pipeline.north_finding.figures import load_published
 from pipeline.north_finding.paper import CITATION, PAPER, TITLE
+from pipeline.north_finding.report_n import n_inference_section
 from pipeline.north_finding.report_results import (
     assumptions_section,
     discover_scenarios,
@@ -337,33 +338,35 @@ def _findings(results: Path, verdicts: pd.DataFrame, published: dict) -> list[Bl
 
 def report(inputs: ReportInputs) -> PaperReport:
     """The paper's report sections, built from ``inputs`` (see the module docstring)."""
-    results = inputs.results
+    results, pub = inputs.results, inputs.settings.get("published_scenario", "paper")
     items, claims = load_published(inputs.published)
     published = load_published_file(inputs.published)
     names = dict(published.get("names") or {})
     # only a "Table N" label names a table (the text's "Sec. 5-2-2" is no Table 5)
     numbers = items["table"].astype(str).str.extract(r"^Table (\d+)$")[0]
     items = items.assign(table_no=pd.to_numeric(numbers, errors="coerce").astype(float))
-    verdicts = _require(
-        read_csv(results / "verdicts.csv", VERDICT_COLUMNS, as_text=True),
-        results / "verdicts.csv",
-    )
-    audit = _require(
-        read_csv(results / "equation_audit.csv", AUDIT_COLUMNS, as_text=True),
-        results / "equation_audit.csv",
+    verdicts, audit = (
+        _require(read_csv(results / name, cols, as_text=True), results / name)
+        for name, cols in (("verdicts.csv", VERDICT_COLUMNS), ("equation_audit.csv", AUDIT_COLUMNS))
     )
     scenarios: Sequence[Path] = discover_scenarios(results)
     figures: list[Block] = [
         Paragraph(f"Figures from {inputs.shown(inputs.figures)} (PNG embedded; SVG beside them).")
     ]
     figures += figure_blocks(PAPER, inputs.figures)
+    n_sec = n_inference_section(results, pub, inputs.shown)
     sections = [
         Section("summary", "Summary", _summary(items, claims, verdicts, audit)),
         Section("equation-audit", "Equation audit", _audit(audit)),
         _tables(items, verdicts),
         _claims(claims, items, verdicts, names),
         Section("figures", "Figures 1–6", figures),
-        Section("findings", "Findings beyond the paper", _findings(results, verdicts, published)),
+        Section(
+            "findings",
+            "Findings beyond the paper",
+            _findings(results, verdicts, published),
+            [n_sec],
+        ),
         Section(
             "scenarios",
             "Per-scenario results",

@@ -17,6 +17,10 @@ Writes, under ``results/north_finding/<scenario>/`` (columns in pipeline/columns
   (:mod:`pipeline.north_finding.trouble`);
 * ``provenance.json``: code version, config hash, packages, seeds.
 
+The N at which the statistical verdicts are judged is not this scenario's ``n_samples``: the
+published scenario's N inference (:mod:`pipeline.north_finding.run_inference`, its own step)
+writes ``n_profile.csv``, ``n_rows.csv``, ``n_robustness.csv`` and ``mc_trials_judged.csv``.
+
 Ideal sensor: no misalignment and no noise; the scale factor and bias are those of
 the real sensor for the methods that estimate them (L5, A4, A5, A6), and 1 and 0
 for the others (the paper's Tables 1, 2, 5 print 0 % for the ideal sensor, and

@@ -96,6 +96,7 @@ class Scenario:
     sensitivity: dict[str, Any] | None
     readings_csv: Path | None
     ranking: dict[str, Any] | None = None
+    n_inference: dict[str, Any] | None = None
 
     @property
     def config_sha256(self) -> str:
@@ -168,6 +169,7 @@ def build_scenario(raw: Any, path: Path, base: Path = ROOT) -> Scenario:
         sensitivity=raw.get("sensitivity"),
         readings_csv=(base / raw["readings_csv"]) if "readings_csv" in raw else None,
         ranking=raw.get("ranking"),
+        n_inference=raw.get("n_inference"),
     )
     _check_semantics(sc)
     sc.decisions()  # every decision names a real field
@@ -201,6 +203,7 @@ def _check_semantics(sc: Scenario) -> None:
             raise ConfigError(
                 f"{sc.path}: ranking needs monte_carlo (its seed): add a monte_carlo block"
             )
+        _check_n_inference(sc)
         ms = sc.table["max_search"]
         if ms["mode"] == "scan" and "step_deg" not in ms:
             raise ConfigError(
@@ -214,6 +217,21 @@ def _check_semantics(sc: Scenario) -> None:
             raise ConfigError(
                 f"{sc.path}: readings_csv = {sc.raw.get('readings_csv')!r}: file not found"
             )
+
+
+def _check_n_inference(sc: Scenario) -> None:
+    if sc.n_inference is None:
+        return
+    if sc.n_trials is None:
+        raise ConfigError(
+            f"{sc.path}: n_inference needs monte_carlo (its seed and trials): add a monte_carlo block"
+        )
+    grid = list(sc.n_inference["n_avg"])
+    if grid != sorted(grid):
+        raise ConfigError(
+            f"{sc.path}: n_inference.n_avg = {grid}: allowed: strictly ascending counts >= 1 "
+            "(the robust likelihood takes the first, smallest N as the widest spread)"
+        )
 
 
 def scenario_data_files(path: str | Path) -> list[str]:

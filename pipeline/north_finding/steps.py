@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from pathlib import Path
 
-__all__ = ["simulate", "verdicts"]
+__all__ = ["infer_n", "simulate", "verdicts"]
 
 
 def simulate(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
@@ -16,6 +16,13 @@ def simulate(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) 
     from pipeline.north_finding.run import run_scenario
 
     run_scenario(inputs["scenario"], Path(outputs["estimates"]).parent, log=log)
+
+
+def infer_n(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
+    """The N the published values imply, over the published scenario's n_inference grid."""
+    from pipeline.north_finding.run_inference import infer_scenario
+
+    infer_scenario(inputs["scenario"], inputs["published"], Path(outputs["n_rows"]).parent, log=log)
 
 
 def verdicts(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:

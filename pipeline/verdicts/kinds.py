@@ -20,7 +20,11 @@ statistical
     100 (#{trials < v} + #{trials = v} / 2) / n; ``consistent`` if the rank lies in
     :data:`RANK_BAND`, else ``not_reproduced``. The test's power is reported: the range of
     values it accepts (the 0.5 and 99.5 percentiles) as a share of the published value, and
-    the noise-free (deterministic) value beside it where the paper package gives one.
+    the noise-free (deterministic) value beside it where the paper package gives one. A
+    package may give per-sample ``weights`` (a mixture of Monte Carlo runs, e.g. over an
+    unknown parameter): the rank is then 100 (sum of the weights of the trials < v + half
+    those = v) / (sum of the weights), and the percentiles are the weighted ones (inverted
+    CDF); without weights every trial weighs the same, as above.
 
 A paper package says what it found for an item in a :class:`Found`; it gives ``missing`` (the
 reason) when its results hold nothing to compare with, and the verdict is ``not_checkable``.
@@ -88,6 +92,7 @@ class Found:
     ``value``: our deterministic value in the item's unit (exact, approximate; NaN when the
     quantity does not occur, e.g. no crossover, with ``shown`` saying so); ``error_pct``: our
     % error (exact items printing one); ``samples``: Monte Carlo samples (statistical);
+    ``weights``: optional per-sample weights of ``samples`` (None: equal);
     ``noise_free``: the noise-free value beside them; ``truth``: the true value (for the
     printed table's own consistency); ``standard_error``: of ``value`` when it is a Monte
     Carlo estimate; ``suffix``: row id suffix when an item is judged on several curves;
@@ -98,6 +103,7 @@ class Found:
     value: float | None = None
     error_pct: float | None = None
     samples: np.ndarray | None = None
+    weights: np.ndarray | None = None
     noise_free: float | None = None
     noise_free_error_pct: float | None = None
     truth: float | None = None
@@ -244,14 +250,21 @@ def _approximate(item: Mapping[str, Any], found: Found) -> Judged:
     return Judged(reproduced, "reproduced" if ok else "not_reproduced", tolerance, reason)
 
 
-def percentile_rank(samples: np.ndarray, value: float) -> float:
-    """100 (#{samples < value} + #{samples = value} / 2) / n.
+def percentile_rank(samples: np.ndarray, value: float, weights: np.ndarray | None = None) -> float:
+    """100 (#{samples < value} + #{samples = value} / 2) / n; with ``weights``, the weighted
+    counts over the total weight.
 
     >>> percentile_rank(np.arange(10.0), 4.0), percentile_rank(np.arange(10.0), 20.0)
     (45.0, 100.0)
+    >>> percentile_rank(np.arange(4.0), 1.5, np.array([0.1, 0.1, 0.4, 0.4]))
+    20.0
     """
-    n = samples.size
-    return float(100.0 * (np.sum(samples < value) + 0.5 * np.sum(samples == value)) / n)
+    if weights is None:
+        n = samples.size
+        return float(100.0 * (np.sum(samples < value) + 0.5 * np.sum(samples == value)) / n)
+    w = np.asarray(weights, dtype=float)
+    below, tie = np.sum(w[samples < value]), np.sum(w[samples == value])
+    return float(100.0 * (below + 0.5 * tie) / np.sum(w))
 
 
 def _statistical(item: Mapping[str, Any], found: Found) -> Judged:
@@ -260,17 +273,28 @@ def _statistical(item: Mapping[str, Any], found: Found) -> Judged:
     sample = np.asarray(found.samples, dtype=float)
     printed = item["value"]
     published = float(printed)
-    rank = percentile_rank(sample, published)
+    w = None if found.weights is None else np.asarray(found.weights, dtype=float)
+    rank = percentile_rank(sample, published, w)
     lo, hi = RANK_BAND
     ok = lo <= rank <= hi
-    q_lo, p05, p50, p95, q_hi = np.percentile(sample, [lo, 5.0, 50.0, 95.0, hi])
+    qs = [lo, 5.0, 50.0, 95.0, hi]
+    q_lo, p05, p50, p95, q_hi = (
+        np.percentile(sample, qs)
+        if w is None
+        else np.percentile(sample, qs, weights=w, method="inverted_cdf")
+    )
     width = (q_hi - q_lo) / abs(published) * 100.0 if published else math.inf
+    of = (
+        f"{sample.size} Monte Carlo trials"
+        if w is None
+        else f"the weighted mixture of {sample.size} Monte Carlo trials"
+    )
     tolerance = (
-        f"percentile rank in [{lo}, {hi}] of {sample.size} Monte Carlo trials, i.e. any value in "
+        f"percentile rank in [{lo}, {hi}] of {of}, i.e. any value in "
         f"[{q_lo:.10g}, {q_hi:.10g}] (a range {width:.3g} % of the published value wide)"
     )
     reason = (
-        f"published value at percentile rank {rank:.1f} of {sample.size} Monte Carlo trials "
+        f"published value at percentile rank {rank:.1f} of {of} "
         f"({'inside' if ok else 'outside'} [{lo}, {hi}])"
     )
     notes = [f"MC 5-95 %: [{p05:.10g}, {p95:.10g}]"]

@@ -225,6 +225,25 @@ def test_statistical_rank_band_edges() -> None:
     }
 
 
+def test_statistical_weighted_samples_rank_by_weight() -> None:
+    """Per-sample weights (a mixture of two runs): the rank is the weighted one, sum of the
+    runs' weights times their ranks, and the percentiles are the mixture's."""
+    a, b = np.arange(1000, dtype=float), 2000.0 + np.arange(1000, dtype=float)
+    sample = np.concatenate([a, b])
+    w = np.concatenate([np.full(1000, 0.5 / 1000), np.full(1000, 0.5 / 1000)])
+    # 1500 is above all of a (rank 100) and below all of b (rank 0): mixture rank 50
+    row = judge(_stat("1500"), Found(samples=sample, weights=w))
+    assert row.verdict == "consistent" and "percentile rank 50.0" in row.reason
+    assert "weighted mixture of 2000" in row.reason
+    # all the weight on b: 1500 lies below every trial that counts
+    w_b = np.concatenate([np.zeros(1000), np.full(1000, 1e-3)])
+    assert judge(_stat("1500"), Found(samples=sample, weights=w_b)).verdict == "not_reproduced"
+    # unequal weights: 0.9 on a puts 1500 at rank 90
+    w_a = np.concatenate([np.full(1000, 0.9e-3), np.full(1000, 0.1e-3)])
+    assert kinds.percentile_rank(sample, 1500.0, w_a) == pytest.approx(90.0)
+    assert judge(_stat("1500"), Found(samples=sample)).verdict == "consistent"  # unweighted: 50
+
+
 def test_statistical_reports_its_power() -> None:
     """A 5-95 % band of 13-133 for a published 100 accepts almost anything: the row says so."""
     rng = np.random.default_rng(1)
