@@ -6,8 +6,12 @@ from pathlib import Path
 
 # Scripts import `derivations` and `pipeline` from the repository root: the workflow puts the
 # root on the PYTHONPATH of its jobs (set here for them; nothing is required from the caller).
+# Hash randomisation off in every job: SymPy orders terms by hash, and simplify() picks among
+# equally short forms in that order, so with a random seed per process the residual text of
+# the equation audit (and the forms a notebook prints) could differ from run to run.
 os.environ.update(
-    PYTHONPATH=os.pathsep.join(p for p in (workflow.basedir, os.getenv("PYTHONPATH", "")) if p)
+    PYTHONPATH=os.pathsep.join(p for p in (workflow.basedir, os.getenv("PYTHONPATH", "")) if p),
+    PYTHONHASHSEED="0",
 )
 sys.path.insert(0, workflow.basedir)
 
