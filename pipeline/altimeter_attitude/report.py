@@ -46,7 +46,7 @@ from pipeline.altimeter_attitude.report_summary import (
     headline_blocks,
     summary_blocks,
 )
-from pipeline.altimeter_attitude.report_tuning import tuning_section
+from pipeline.altimeter_attitude.report_tuning import TUNING_ID, tuning_section
 from pipeline.altimeter_attitude.scenario import load_scenario
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
@@ -199,7 +199,7 @@ def _results(
     return Section("results", "Results per scenario", blocks, subs)
 
 
-def _figures(figures_dir: Path, sweep: pd.DataFrame | None, tuning: Section) -> Section:
+def _figures(figures_dir: Path, sweep: pd.DataFrame | None) -> Section:
     inner: list[Block] = list(figure_blocks(PAPER, figures_dir, [SWEEP_FIGURE]))
     if sweep is None or sweep.empty:
         inner.append(not_available("sweep.csv"))
@@ -219,7 +219,7 @@ def _figures(figures_dir: Path, sweep: pd.DataFrame | None, tuning: Section) -> 
         "figures",
         "Figures",
         list(figure_blocks(PAPER, figures_dir, FIGURES)),
-        [Section("sweep", "Sensitivity sweep", inner), tuning],
+        [Section("sweep", "Sensitivity sweep", inner)],
     )
 
 
@@ -362,12 +362,10 @@ def report(inputs: ReportInputs) -> PaperReport:
             windows,
             headline_blocks(verdicts, sums, published_scenario, windows),
         ),
-        _figures(
-            inputs.figures,
-            sweep,
-            tuning_section(_read(tuning_path, UKF_TUNING_COLUMNS), inputs.shown(tuning_path)),
-        ),
+        _figures(inputs.figures, sweep),
         findings_section(sums, sweep, noise_free),
+        # the grid behind the UKF's settings: a supporting appendix of the combined report
+        tuning_section(_read(tuning_path, UKF_TUNING_COLUMNS), inputs.shown(tuning_path)),
         _assumptions(files, inputs.shown),
         _provenance(
             dirs,
@@ -387,7 +385,7 @@ def report(inputs: ReportInputs) -> PaperReport:
         "summary": ["summary"],
         "published": None,
         "figures": ["figures"],
-        "findings": ["findings", "results"],
+        "findings": ["findings", "results", TUNING_ID],
         "assumptions": ["assumptions"],
     }
     return PaperReport(sections, parts)

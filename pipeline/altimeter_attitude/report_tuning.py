@@ -23,7 +23,10 @@ from pipeline.altimeter_attitude.report_findings import fmt3
 from pipeline.report.html import format_value
 from pipeline.report.model import Block, Paragraph, Section, frame_table, not_available
 
-__all__ = ["tuning_section", "tuning_sentence"]
+#: id of the tuning section (the combined report puts it in the paper's supporting appendix)
+TUNING_ID = "ukf-tuning"
+
+__all__ = ["TUNING_ID", "tuning_section", "tuning_sentence"]
 
 _SHOWN = {
     "alpha": "alpha",
@@ -95,7 +98,7 @@ def tuning_section(tuning: pd.DataFrame | None, shown: str = "ukf_tuning.csv") -
         inner.append(
             frame_table(table.rename(columns=_SHOWN), formatters=_renamed(fmts), caption=shown)
         )
-    return Section("ukf-tuning", "UKF sigma-point tuning", inner)
+    return Section(TUNING_ID, "UKF sigma-point tuning", inner)
 
 
 def _renamed(fmts: dict) -> dict:

@@ -361,12 +361,8 @@ def report(inputs: ReportInputs) -> PaperReport:
         _tables(items, verdicts),
         _claims(claims, items, verdicts, names),
         Section("figures", "Figures 1–6", figures),
-        Section(
-            "findings",
-            "Findings beyond the paper",
-            _findings(results, verdicts, published),
-            [n_sec],
-        ),
+        Section("findings", "Findings beyond the paper", _findings(results, verdicts, published)),
+        n_sec,  # the inferred N: a supporting appendix of the combined report
         Section(
             "scenarios",
             "Per-scenario results",
@@ -380,7 +376,7 @@ def report(inputs: ReportInputs) -> PaperReport:
         "summary": ["summary"],
         "published": ["published-vs-reproduced", "claims"],
         "figures": ["figures"],
-        "findings": ["findings"],
+        "findings": ["findings", "n-inference"],
         "assumptions": ["assumptions"],
     }
     return PaperReport(sections, parts)
