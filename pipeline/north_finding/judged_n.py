@@ -165,7 +165,7 @@ def _mixed(results: Mapping[str, Any]) -> tuple[Cause | None, frozenset[str]]:
             continue
         ids.append(item["id"])
         parts.append(
-            f"{item['id']} ({item['label']}, method {item['select']['method']}) is "
+            f"{item['label']}, {_method_name(published, item['select']['method'])} is "
             f"{consistent_range(band.index.tolist(), band.tolist())}"
             f" but the other rows put "
             f"{posterior_range(rows['n_avg'].tolist(), rows['weight'].tolist())}"
@@ -173,12 +173,18 @@ def _mixed(results: Mapping[str, Any]) -> tuple[Cause | None, frozenset[str]]:
         )
     if not ids:
         return None, frozenset()
+    lo, hi = RANK_BAND
     text = (
-        "The paper gives no averaging count N, and no one N on our grid makes every "
-        "statistical row noise around our model: " + "; ".join(parts) + "; in the mixture the "
-        "other rows' weights give, each lies outside the rank band, so the tables' rows cannot all come from one run of our model "
-        "at one N (they may come from runs at different N, or from errors the paper does not "
-        "describe)"
+        "The paper gives no averaging count N. With our Monte Carlo weighted over N by how well "
+        f"the other statistical rows fit each N, these rows fall outside the {lo:g}-{hi:g} % "
+        "rank band: " + "; ".join(parts) + ". So the tables' rows cannot all come from one run "
+        "of our model at one N (they may come from runs at different N, or from errors the "
+        "paper does not describe)"
     )
     cause = Cause("unpublished", "no one averaging count N fits every statistical row", text)
     return cause, frozenset(ids)
+
+
+def _method_name(published: Mapping[str, Any], method: str) -> str:
+    """The paper's name of ``method`` (published ``names:``), e.g. 'levelling method 5'."""
+    return str((published.get("names") or {}).get(method, f"method {method}"))

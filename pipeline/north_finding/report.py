@@ -354,7 +354,7 @@ def report(inputs: ReportInputs) -> PaperReport:
         Paragraph(f"Figures from {inputs.shown(inputs.figures)} (PNG embedded; SVG beside them).")
     ]
     figures += figure_blocks(PAPER, inputs.figures)
-    n_sec = n_inference_section(results, pub, inputs.shown)
+    n_sec = n_inference_section(results, pub, inputs.shown, published)
     sections = [
         Section("summary", "Summary", _summary(items, claims, verdicts, audit)),
         Section("equation-audit", "Equation audit", _audit(audit)),

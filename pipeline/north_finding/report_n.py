@@ -7,8 +7,9 @@ Reads ``n_profile.csv`` and ``n_rows.csv`` of the published scenario (written by
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -52,7 +53,7 @@ def _profile_table(prof: pd.DataFrame) -> Block:
     )
 
 
-def _robustness(d: Path) -> list[Block]:
+def _robustness(d: Path, label: Callable[[str], str]) -> list[Block]:
     rob = read_csv(d / "n_robustness.csv", N_ROBUSTNESS_COLUMNS)
     if rob is None or rob.empty:
         return []
@@ -62,7 +63,7 @@ def _robustness(d: Path) -> list[Block]:
             "contamination eps": rob["contamination"].map(lambda x: f"{x:g}"),
             "N inferred from all rows": rob["n_inferred"].astype(int).map(fmt_grid),
             "rows not consistent in their leave-one-out mixture": [
-                f"{int(k)}: {str(ids).replace(';', ', ')}" if int(k) else "0"
+                f"{int(k)}: {'; '.join(label(i) for i in str(ids).split(';'))}" if int(k) else "0"
                 for k, ids in zip(rob["n_not_consistent"], rob["not_consistent"], strict=True)
             ],
         }
@@ -76,8 +77,33 @@ def _robustness(d: Path) -> list[Block]:
     ]
 
 
-def n_inference_section(results: Path, scenario: str, shown: Callable[[Path], str]) -> Section:
-    """The N inference of the published scenario ``results/<scenario>/``."""
+def labeller(published: Mapping[str, Any] | None) -> Callable[[str], str]:
+    """A row's name for readers: its item's label and the paper's name of the method
+    ('Table 9, azimuth method 3'); the id itself for an id the published file lacks.
+
+    >>> labeller({"items": [{"id": "T9.psi.A3", "label": "Table 9",
+    ...   "select": {"method": "A3"}}], "names": {"A3": "azimuth method 3"}})("T9.psi.A3")
+    'Table 9, azimuth method 3'
+    """
+    published = published or {}
+    names = published.get("names") or {}
+    by_id = {}
+    for item in published.get("items", []):
+        method = (item.get("select") or {}).get("method")
+        name = names.get(method, f"method {method}") if method else ""
+        by_id[item["id"]] = f"{item.get('label', item['id'])}" + (f", {name}" if name else "")
+    return lambda row_id: by_id.get(row_id, row_id)
+
+
+def n_inference_section(
+    results: Path,
+    scenario: str,
+    shown: Callable[[Path], str],
+    published: Mapping[str, Any] | None = None,
+) -> Section:
+    """The N inference of the published scenario ``results/<scenario>/`` (rows named by the
+    ``published`` file's labels)."""
+    label = labeller(published)
     d = results / scenario
     prof = read_csv(d / "n_profile.csv", N_PROFILE_COLUMNS)
     rows = read_csv(d / "n_rows.csv", N_ROW_COLUMNS)
@@ -90,12 +116,14 @@ def n_inference_section(results: Path, scenario: str, shown: Callable[[Path], st
     for item_id, r in rows.groupby("id", sort=False):
         r = r.sort_values("n_avg")
         text_range = posterior_range(r["n_avg"].tolist(), r["weight"].tolist(), heaviest=False)
-        ranges.setdefault(text_range.removeprefix("90 % of the weight on "), []).append(item_id)
+        ranges.setdefault(text_range.removeprefix("90 % of the weight on "), []).append(
+            label(str(item_id))
+        )
     n_items, n_trials = rows["id"].nunique(), int(prof["n_trials"].iloc[0])
-    excluded = sorted(set(rows.loc[~rows["used"].astype(bool), "id"]))
+    excluded = [label(i) for i in sorted(set(rows.loc[~rows["used"].astype(bool), "id"]))]
     small, rest = prof.iloc[0], prof.iloc[1:]
     at_best = rows[rows["n_avg"] == best]
-    far = at_best.loc[at_best["outlier_prob"] > 0.5, "id"].tolist()
+    far = [label(i) for i in at_best.loc[at_best["outlier_prob"] > 0.5, "id"].tolist()]
     plain_best = int(prof["n_avg"].iloc[int(prof["log_lik_gaussian"].to_numpy().argmax())])
     text = (
         "The paper averages its 5 % white noise 'as much as possible' but gives no number of "
@@ -113,12 +141,12 @@ def n_inference_section(results: Path, scenario: str, shown: Callable[[Path], st
         "lies: "
         + "; ".join(
             f"{where} for {len(ids)} row{'s' if len(ids) != 1 else ''}"
-            + (f" ({', '.join(ids)})" if len(ids) <= 4 else "")
+            + (f" ({'; '.join(ids)})" if len(ids) <= 4 else "")
             for where, ids in sorted(ranges.items(), key=lambda kv: (-len(kv[1]), kv[0]))
         )
         + f" (n_rows.csv, column weight; at 1 kHz, N = {fmt_grid(best)} is {best / 1000 / 60:.0f} min per table position). "
         + (
-            f"At N = {fmt_grid(best)} the rows {', '.join(far)} are more likely (posterior > 0.5) "
+            f"At N = {fmt_grid(best)} the rows {'; '.join(far)} are more likely (posterior > 0.5) "
             "from a run the paper does not describe than from our model: the robust rule bounds "
             "their pull on N (with the plain Gaussian, eps = 0, they would drag the estimate "
             f"to N = {fmt_grid(plain_best)}). "
@@ -126,7 +154,7 @@ def n_inference_section(results: Path, scenario: str, shown: Callable[[Path], st
             else ""
         )
         + (
-            f"Excluded (outside the rank band at every grid N): {', '.join(excluded)}. "
+            f"Excluded (outside the rank band at every grid N): {'; '.join(excluded)}. "
             if excluded
             else "No row lies outside the rank band at every grid N, so none is excluded. "
         )
@@ -138,5 +166,5 @@ def n_inference_section(results: Path, scenario: str, shown: Callable[[Path], st
     )
     # where each row is consistent on the grid is in its verdict row's notes (the page budget
     # of the PDF's main part leaves no room for a second per-row table)
-    blocks = [Paragraph(text), _profile_table(prof), *_robustness(d)]
+    blocks = [Paragraph(text), _profile_table(prof), *_robustness(d, label)]
     return Section("n-inference", title, blocks)
