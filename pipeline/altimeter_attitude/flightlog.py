@@ -43,7 +43,8 @@ value). Defaults of k and of the UKF's alpha/beta/kappa are those of the paper s
 What was inferred (rates, duration, largest step deviation, columns and units, gravity,
 start; |f| over the levelling window must be 0.8-1.2 g, which catches accelerometer unit
 mistakes) is printed to stderr before the filters run. Bad input ends with one 'error:' line
-and exit status 2; a filter failure with one 'error:' line and status 1.
+and exit status 2 ('data row' n is the n-th line after the header); a filter failure with
+one 'error:' line and status 1.
 
 Output CSV (FLIGHTLOG_OUTPUT_COLUMNS): t_s, filter, roll_deg, pitch_deg, roll_sigma_deg,
 pitch_sigma_deg for every state time t_k of every filter asked for (sigma empty for the

@@ -163,3 +163,25 @@ def test_defaults_are_the_paper_scenario_settings():
         sc.ukf_beta,
         sc.ukf_kappa,
     )
+
+
+def test_gaps_and_jitter_are_refused_naming_the_rows(noisy, tmp_path, capsys):
+    """A 50 ms dropout is refused naming the first row after it; 3 % jitter on one stamp is
+    refused at the default --max-jitter 0.01, accepted with --max-jitter 0.05, and the
+    estimates then stay consistent with the truth."""
+    inp, log = noisy
+    frame = pd.read_csv(log)
+    out = tmp_path / "att.csv"
+    gap = sim.write(frame.drop(index=range(6000, 6005)).reset_index(drop=True), tmp_path / "g.csv")
+    assert sim.run(gap, out, "--filters", "linear_kf") == 2
+    err = capsys.readouterr().err
+    assert "IMU step is inferred as 0.01 s (100 Hz)" in err
+    assert "gaps or jitter before data rows 6001 (0.06 s)" in err and not out.exists()
+    jit = frame.copy()
+    jit.loc[3000, "t_s"] += 0.0003
+    jit_log = sim.write(jit, tmp_path / "j.csv")
+    assert sim.run(jit_log, out, "--filters", "linear_kf") == 2
+    assert "before data rows 3001 (0.0103 s), 3002 (0.0097 s)" in capsys.readouterr().err
+    assert sim.run(jit_log, out, "--filters", "linear_kf", "--max-jitter", "0.05") == 0
+    assert "largest step deviation 3.00%" in capsys.readouterr().err
+    assert _worst(sim.errors(out, inp, "linear_kf")) < CONSISTENT
