@@ -55,8 +55,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
-import re
 import sys
 from pathlib import Path
 
@@ -66,6 +64,7 @@ import pandas as pd
 from pipeline.altimeter_attitude import complementary, euler_filters, linear_kf
 from pipeline.altimeter_attitude.columns import FLIGHTLOG_OUTPUT_COLUMNS
 from pipeline.altimeter_attitude.estimates import Estimates
+from pipeline.altimeter_attitude.flightlog_args import Parser, option, out_problem
 from pipeline.altimeter_attitude.flightlog_format import (
     STAMPS,
     FlightLog,
@@ -145,7 +144,7 @@ def run_log(
     h_sigma = altimeter_sigma if h_sigma is None else h_sigma
     if report is not None:
         report(
-            f"start: roll {phi0 / DEG:.3f} deg, pitch {theta0 / DEG:.3f} deg "
+            f"start: roll {round(phi0 / DEG, 3) + 0.0:.3f} deg, pitch {round(theta0 / DEG, 3) + 0.0:.3f} deg "
             f"({'levelling over ' + str(n_level) + ' rows' if roll0_deg is None else 'given'}; "
             f"|f| = {load:.4f} g there), V_d {v_d0:g} m/s, "
             f"h {h0:.6g} m; gravity {gravity:.8g} m/s^2; stamp {stamp}"
@@ -196,39 +195,8 @@ def run_log(
     return pd.concat(frames, ignore_index=True)[FLIGHTLOG_OUTPUT_COLUMNS]
 
 
-def _number(name: str, lo: float, hi: float, lo_open: bool = False):
-    """An argparse type: a finite number in [lo, hi] ((lo, hi] if lo_open), named in errors."""
-    interval = f"{'(' if lo_open else '['}{lo:g}, {hi:g}]"
-
-    def parse(text: str) -> float:
-        try:
-            value = float(text)
-        except ValueError:
-            value = math.nan
-        ok = math.isfinite(value) and (value > lo if lo_open else value >= lo) and value <= hi
-        if not ok:
-            raise argparse.ArgumentTypeError(f"{name} = {text!r}: must be a number in {interval}")
-        return value
-
-    return parse
-
-
-def _option(parser, name: str, lo: float, hi: float, help: str, lo_open=True, **kw) -> None:
-    parser.add_argument(name, type=_number(name, lo, hi, lo_open), help=help, **kw)
-
-
-class _Parser(argparse.ArgumentParser):
-    """argparse with one-line errors: ``error: --option = 'value': what is allowed``."""
-
-    def error(self, message: str):  # type: ignore[override]
-        message = re.sub(r"^argument ([^:]+): (?=\1 = )", "", message)
-        message = re.sub(r"^argument ([^:]+): ", r"\1: ", message)
-        print(f"error: {message} (see --help)", file=sys.stderr)
-        raise SystemExit(2)
-
-
 def _parser() -> argparse.ArgumentParser:
-    p = _Parser(
+    p = Parser(
         prog="python -m pipeline.altimeter_attitude.flightlog",
         description=__doc__,
         formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -243,7 +211,7 @@ def _parser() -> argparse.ArgumentParser:
         choices=STAMPS,
         help="IMU sample stamped at its interval's start (default) or end",
     )
-    _option(
+    option(
         p,
         "--max-jitter",
         0,
@@ -253,9 +221,9 @@ def _parser() -> argparse.ArgumentParser:
         default=0.01,
     )
     g = p.add_mutually_exclusive_group()
-    _option(g, "--gravity", 9.7, 9.9, "g in m/s^2 (default 9.80665)")
-    _option(g, "--latitude-deg", -90, 90, "WGS-84 normal gravity at this latitude", False)
-    _option(
+    option(g, "--gravity", 9.7, 9.9, "g in m/s^2 (default 9.80665)")
+    option(g, "--latitude-deg", -90, 90, "WGS-84 normal gravity at this latitude", False)
+    option(
         p,
         "--height-m",
         -1000,
@@ -263,10 +231,10 @@ def _parser() -> argparse.ArgumentParser:
         "height for --latitude-deg (default: mean altimeter reading)",
         False,
     )
-    _option(p, "--gyro-sigma-deg-s", 0, 100, "gyro noise per sample (0.5)", default=0.5)
-    _option(p, "--accel-sigma-m-s2", 0, 100, "accelerometer noise per sample (0.1)", default=0.1)
-    _option(p, "--altimeter-sigma-m", 0, 1000, "altimeter noise (2)", default=2.0)
-    _option(
+    option(p, "--gyro-sigma-deg-s", 0, 100, "gyro noise per sample (0.5)", default=0.5)
+    option(p, "--accel-sigma-m-s2", 0, 100, "accelerometer noise per sample (0.1)", default=0.1)
+    option(p, "--altimeter-sigma-m", 0, 1000, "altimeter noise (2)", default=2.0)
+    option(
         p,
         "--k-per-s",
         0,
@@ -275,10 +243,10 @@ def _parser() -> argparse.ArgumentParser:
         False,
         default=DEFAULTS["k_per_s"],
     )
-    _option(p, "--ukf-alpha", 0, 1, "UKF alpha (1)", default=DEFAULTS["ukf_alpha"])
-    _option(p, "--ukf-beta", 0, 10, "UKF beta (2)", False, default=DEFAULTS["ukf_beta"])
-    _option(p, "--ukf-kappa", -4, 100, "UKF kappa (0; > -4)", default=DEFAULTS["ukf_kappa"])
-    _option(
+    option(p, "--ukf-alpha", 0, 1, "UKF alpha (1)", default=DEFAULTS["ukf_alpha"])
+    option(p, "--ukf-beta", 0, 10, "UKF beta (2)", False, default=DEFAULTS["ukf_beta"])
+    option(p, "--ukf-kappa", -4, 100, "UKF kappa (0; > -4)", default=DEFAULTS["ukf_kappa"])
+    option(
         p,
         "--omega-c-rad-s",
         0,
@@ -286,31 +254,15 @@ def _parser() -> argparse.ArgumentParser:
         "complementary filter bandwidth (0.05)",
         default=DEFAULTS["omega_c"],
     )
-    _option(p, "--roll0-deg", -89, 89, "initial roll (default: levelling)", False)
-    _option(p, "--pitch0-deg", -89, 89, "initial pitch (default: levelling)", False)
-    _option(p, "--init-sigma-deg", 0, 90, "initial roll and pitch sigma (2)", default=2.0)
-    _option(p, "--v-d0-m-s", -1000, 1000, "initial V_d, down (0)", False, default=0.0)
-    _option(p, "--v-d-sigma0-m-s", 0, 1000, "its sigma (1)", default=1.0)
-    _option(p, "--h0-m", -1000, 30000, "initial h (default: first altimeter value)", False)
-    _option(p, "--h-sigma0-m", 0, 1000, "its sigma (default: --altimeter-sigma-m)")
-    _option(p, "--level-s", 0, 600, "levelling window, s (1; at most the log)", default=1.0)
+    option(p, "--roll0-deg", -89, 89, "initial roll (default: levelling)", False)
+    option(p, "--pitch0-deg", -89, 89, "initial pitch (default: levelling)", False)
+    option(p, "--init-sigma-deg", 0, 90, "initial roll and pitch sigma (2)", default=2.0)
+    option(p, "--v-d0-m-s", -1000, 1000, "initial V_d, down (0)", False, default=0.0)
+    option(p, "--v-d-sigma0-m-s", 0, 1000, "its sigma (1)", default=1.0)
+    option(p, "--h0-m", -1000, 30000, "initial h (default: first altimeter value)", False)
+    option(p, "--h-sigma0-m", 0, 1000, "its sigma (default: --altimeter-sigma-m)")
+    option(p, "--level-s", 0, 600, "levelling window, s (1; at most the log)", default=1.0)
     return p
-
-
-def _out_problem(out: Path, log: Path) -> str | None:
-    """Why ``out`` cannot be written, or None (checked before any compute)."""
-    if out.is_dir():
-        return f"--out = {out}: is a directory; give the CSV file to write"
-    if out.exists() and log.exists() and out.resolve() == log.resolve():
-        return f"--out = {out}: is the input log; give another file"
-    parent = out.parent
-    while not parent.exists() and parent != parent.parent:
-        parent = parent.parent
-    if not parent.is_dir():
-        return f"--out = {out}: {parent} is not a directory"
-    if not os.access(parent, os.W_OK | os.X_OK) or (out.exists() and not os.access(out, os.W_OK)):
-        return f"--out = {out}: not writable (no write permission in {parent})"
-    return None
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -328,7 +280,7 @@ def main(argv: list[str] | None = None) -> int:
             parser.error(f"--height-m = {args.height_m:g}: only with --latitude-deg")
     except SystemExit as exc:  # --help (0) or a bad argument (2, one line printed)
         return int(exc.code or 0) if not isinstance(exc.code, str) else 2
-    problem = _out_problem(args.out, args.log)
+    problem = out_problem(args.out, args.log)
 
     def say(line: str) -> None:
         print(line, file=sys.stderr)
@@ -352,6 +304,8 @@ def main(argv: list[str] | None = None) -> int:
                 f"--level-s = {args.level_s:g}: longer than the log ({log.duration:.6g} s)"
             )
         gravity = STANDARD_GRAVITY if args.gravity is None else args.gravity
+        if args.gravity is None and args.latitude_deg is None:
+            say("gravity: standard 9.80665 m/s^2 (--gravity or --latitude-deg to change it)")
         if args.latitude_deg is not None:
             alt = log.altimeter[np.isfinite(log.altimeter)]
             height = float(alt.mean()) if args.height_m is None else args.height_m
