@@ -93,6 +93,21 @@ def unit_of(quantity: str, column: str, unit: str | None, where: str = "--column
     )
 
 
+def _entry(out: dict, quantity: object, column: object, unit: object, where: str) -> None:
+    """Check and add one map entry (quantity -> (column, unit or None))."""
+    item = f"{quantity}={column}" + (f":{unit}" if unit is not None else "")
+    if quantity not in QUANTITIES:
+        raise FlightLogError(
+            f"{where}: {item!r}: quantity {quantity!r} unknown; allowed: {', '.join(QUANTITIES)}"
+        )
+    if not isinstance(column, str) or not column or not (unit is None or isinstance(unit, str)):
+        raise FlightLogError(f"{where}: {item!r}: the column and unit must be non-empty text")
+    if quantity in out:
+        raise FlightLogError(f"{where}: {quantity} is mapped twice")
+    unit_of(str(quantity), column, unit, where)
+    out[quantity] = (column, unit)
+
+
 def parse_columns(text: str, where: str = "--columns") -> dict[str, tuple[str, str | None]]:
     """``QUANTITY=COLUMN[:UNIT],...`` -> {quantity: (column, unit or None)}."""
     out: dict[str, tuple[str, str | None]] = {}
@@ -103,14 +118,7 @@ def parse_columns(text: str, where: str = "--columns") -> dict[str, tuple[str, s
         column, _, unit = (s.strip() for s in rest.partition(":"))
         if not eq or not column:
             raise FlightLogError(f"{where}: {item!r}: write QUANTITY=COLUMN[:UNIT]")
-        if quantity not in QUANTITIES:
-            raise FlightLogError(
-                f"{where}: {item!r}: quantity {quantity!r} unknown; allowed: {', '.join(QUANTITIES)}"
-            )
-        if quantity in out:
-            raise FlightLogError(f"{where}: {quantity} is mapped twice")
-        out[quantity] = (column, unit or None)
-        unit_of(quantity, column, out[quantity][1], where)
+        _entry(out, quantity, column, unit or None, where)
     return out
 
 
@@ -130,7 +138,7 @@ def load_format(path: str | Path) -> tuple[dict[str, tuple[str, str | None]], st
     cols = raw.get("columns") or {}
     if not isinstance(cols, dict):
         raise FlightLogError(f"{path}: columns must be a mapping QUANTITY: {{column, unit}}")
-    items = []
+    out: dict[str, tuple[str, str | None]] = {}
     for quantity, spec in cols.items():
         if isinstance(spec, dict) and set(spec) <= {"column", "unit"} and "column" in spec:
             column, unit = spec["column"], spec.get("unit")
@@ -140,8 +148,8 @@ def load_format(path: str | Path) -> tuple[dict[str, tuple[str, str | None]], st
             raise FlightLogError(
                 f"{path}: columns.{quantity} = {spec!r}: write a column name or {{column, unit}}"
             )
-        items.append(f"{quantity}={column}" + (f":{unit}" if unit is not None else ""))
-    return parse_columns(",".join(items), str(path)), stamp
+        _entry(out, quantity, column, unit, str(path))
+    return out, stamp
 
 
 @dataclass(frozen=True)

@@ -212,6 +212,12 @@ def test_bad_arguments_are_named(simulated, tmp_path, capsys, args, match):
             "unit 'min' unknown for t; allowed: s, ms, us",
         ),
         ("columns: {t: [\n", "cannot read the format file"),
+        ("columns: {gyro_x: {column: 5, unit: deg/s}}\n", "the column and unit must be non-empty"),
+        (
+            "columns: {altimeter: {column: h, unit: .nan}}\n",
+            "the column and unit must be non-empty",
+        ),
+        ("columns: {gyro_x: gx}\n", "gyro_x=gx: no unit given and none in the column name"),
     ],
 )
 def test_bad_format_files_are_named(simulated, tmp_path, capsys, text, match):
