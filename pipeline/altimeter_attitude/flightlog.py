@@ -1,6 +1,11 @@
 """Run the paper's filters on your own flight log.
 
-``python -m pipeline.altimeter_attitude.flightlog LOG.csv --out attitude.csv``
+``inertial-repro flight-log LOG.csv --out attitude.csv [--filters linear_kf,ukf]``
+
+Frames and units: navigation frame N is NED (z down; gravity g^n = (0, 0, 9.80665) m/s^2); body
+frame b has x forward, y right, z down; roll phi and pitch theta are those of the 3-2-1
+(yaw psi, pitch theta, roll phi) Euler sequence from N to b (pitch positive nose up, roll
+positive right wing down; yaw is not estimated). SI units, angles in deg at the edges.
 
 Input CSV (one row per IMU sample, header required, comma separated)::
 
@@ -14,6 +19,13 @@ Input CSV (one row per IMU sample, header required, comma separated)::
     accel_z_m_s2
     altimeter_m    barometric altitude (up), m; empty where there is no sample. The
                    altimeter must sample every n-th IMU row (n inferred and checked)
+
+At rest and level the accelerometers read specific force f^b = (0, 0, -g); nose up by
+theta, accel_x_m_s2 reads about +g sin(theta). Example (100 Hz IMU, altimeter at 10 Hz)::
+
+    t_s,gyro_x_rad_s,gyro_y_rad_s,gyro_z_rad_s,accel_x_m_s2,accel_y_m_s2,accel_z_m_s2,altimeter_m
+    0.00,0.001,-0.002,0.0,0.17,-0.09,-9.80,1000.2
+    0.01,0.001,-0.002,0.0,0.17,-0.08,-9.81,
 
 Row k's IMU sample is held over [t_k, t_k+1] (the last row has no interval and is not used
 for propagation); an altimeter value in row k is a measurement at t_k. The filters start
@@ -217,9 +229,9 @@ def _positive(name: str):
     return parse
 
 
-def main(argv: list[str] | None = None) -> int:
+def main(argv: list[str] | None = None, prog: str | None = None) -> int:
     parser = argparse.ArgumentParser(
-        prog="python -m pipeline.altimeter_attitude.flightlog",
+        prog=prog or "python -m pipeline.altimeter_attitude.flightlog",
         description=__doc__,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
