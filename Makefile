@@ -1,6 +1,7 @@
 # Reproducible environment + workflow entry points.
 #
-#   make venv       create .venv from environment.lock (hash-checked, Python 3.11 only)
+#   make venv       create .venv from environment.lock (hash-checked, Python 3.11 only), then
+#                   install this project editable into it (--no-deps): .venv/bin/inertial-repro
 #   make test       run the test suite            (PYTEST_ARGS="-k foo -x" to pass options;
 #                   TEST_WORKERS=2 pytest-xdist workers by default, 0 for one process);
 #                   first installs the system tools the report tests drive (system-deps)
@@ -17,6 +18,8 @@ PYTHON      ?= python3
 REQUIRED_PY := 3.11
 VENV        := .venv
 STAMP       := $(VENV)/.stamp
+# The project itself, installed editable (its console script) after the lock's packages.
+PROJECT_STAMP := $(VENV)/.project-stamp
 CORES       ?= 2
 PYTEST_ARGS ?=
 # pytest-xdist workers; each test file runs whole in one worker (its module fixtures once)
@@ -44,7 +47,7 @@ REQUIRE_SYSTEM_DEPS ?= 0
 
 .PHONY: venv reproduce workflow test lint bench lock clean check-python system-deps
 
-venv: $(STAMP)
+venv: $(PROJECT_STAMP)
 
 check-python:
 	@found="$$($(PYTHON) -c 'import platform; print(platform.python_version())' 2>/dev/null)"; \
@@ -71,11 +74,19 @@ $(STAMP): environment.lock
 	$(VENV)/bin/pip install --no-input --require-hashes --no-build-isolation -r environment.lock
 	touch $@
 
+# Editable, so the source tree is what runs; --no-deps so that only the lock's pins are used
+# (the project declares none); --no-build-isolation so that the build backend is the lock's
+# hash-checked setuptools, not a fresh download. Redone when pyproject.toml changes (the console
+# scripts are declared there), without rebuilding the environment.
+$(PROJECT_STAMP): $(STAMP) pyproject.toml
+	$(VENV)/bin/pip install --no-input --no-deps --no-build-isolation --editable .
+	touch $@
+
 # One `make reproduce` at a time per checkout (flock); inside it, a Snakemake lock left by a
 # killed run is stale and is released, and the outputs a killed run left incomplete are rerun.
 SNAKEMAKE_RUN := PYTHONPATH=$(CURDIR) $(VENV)/bin/snakemake
 
-reproduce: $(STAMP)
+reproduce: $(PROJECT_STAMP)
 	@mkdir -p .snakemake
 	@flock -n -E 75 .snakemake/make-reproduce.lock $(MAKE) --no-print-directory workflow; \
 	status=$$?; if [ $$status -eq 75 ]; then \
@@ -110,13 +121,13 @@ system-deps:
 			"(install Debian's $(SYSTEM_PKGS))" >&2; \
 	fi
 
-test: $(STAMP) system-deps
+test: $(PROJECT_STAMP) system-deps
 	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pytest -q -n $(TEST_WORKERS) --dist loadfile $(PYTEST_ARGS)
 
-bench: $(STAMP)
+bench: $(PROJECT_STAMP)
 	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.altimeter_attitude.benchmark
 
-lint: $(STAMP)
+lint: $(PROJECT_STAMP)
 	$(VENV)/bin/ruff check .
 	$(VENV)/bin/ruff format --check .
 	$(VENV)/bin/snakefmt --check Snakefile pipeline/rules/

@@ -1,6 +1,13 @@
 """Run the paper's filters on your own flight log.
 
-``python -m pipeline.altimeter_attitude.flightlog LOG.csv --out attitude.csv [options]``
+``inertial-repro flight-log LOG.csv --out attitude.csv [options]``
+
+Frames and units: navigation frame N is NED (z down; gravity g^n = (0, 0, g) m/s^2); body
+frame b has x forward, y right, z down; roll phi and pitch theta are those of the 3-2-1
+(yaw psi, pitch theta, roll phi) Euler sequence from N to b (pitch positive nose up, roll
+positive right wing down; yaw is not estimated). SI units, angles in deg at the edges. At rest
+and level the accelerometers read specific force f^b = (0, 0, -g); nose up by theta,
+accel_x_m_s2 reads about +g sin(theta).
 
 Input CSV (one row per IMU sample, header required, comma separated)::
 
@@ -195,9 +202,9 @@ def run_log(
     return pd.concat(frames, ignore_index=True)[FLIGHTLOG_OUTPUT_COLUMNS]
 
 
-def _parser() -> argparse.ArgumentParser:
+def _parser(prog: str | None = None) -> argparse.ArgumentParser:
     p = Parser(
-        prog="python -m pipeline.altimeter_attitude.flightlog",
+        prog=prog or "python -m pipeline.altimeter_attitude.flightlog",
         description=__doc__,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
@@ -265,12 +272,12 @@ def _parser() -> argparse.ArgumentParser:
     return p
 
 
-def main(argv: list[str] | None = None) -> int:
+def main(argv: list[str] | None = None, prog: str | None = None) -> int:
     """The command line; returns 0, 2 (bad input, argument or --out) or 1 (a filter failed).
 
     Never raises: every failure is one ``error:`` line on stderr.
     """
-    parser = _parser()
+    parser = _parser(prog)
     try:
         args = parser.parse_args(argv)
         filters = tuple(f.strip() for f in args.filters.split(",") if f.strip())

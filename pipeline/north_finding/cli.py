@@ -1,16 +1,45 @@
 """Command line: the paper's estimators on your own turntable readings.
 
 Estimate roll, pitch, azimuth and the sensor calibration from a readings CSV
-(format: ``pipeline/north_finding/readings.py``; one row per table position)::
+(one row per table position; format in pipeline/north_finding/readings.py)::
 
-    python -m pipeline.north_finding.cli estimate --readings my_table.csv \\
+    inertial-repro north-finding estimate --readings my_table.csv \\
         --lat-deg 35.7 --g 9.7966 --omega-ie 7.292115e-5 --compass-deg 80 \\
         --level-source L1 --out my_estimates.csv
 
 Write a readings CSV simulated from a scenario (for trying the format)::
 
-    python -m pipeline.north_finding.cli simulate-readings \\
+    inertial-repro north-finding simulate-readings \\
         --scenario config/scenarios/north_finding/paper.yaml --out example.csv
+
+Readings CSV: a header, then one row per table position; lines starting with #
+are comments. Example row:  90,x,3.2807186,2.3616627e-05,1000000
+  tau_deg     table angle tau, deg, 0 <= tau_deg < 360
+  axis        sensor axis of B the reading is on: x (as mounted), y (mounted on
+              y_B: levelling methods L3, L4) or z (turned by -90 deg about y_B:
+              methods L5, A6)
+  accel_m_s2  averaged accelerometer reading, m/s^2: specific force f = -g at
+              rest, so a level sensor on z (down) reads about -9.8 and one on x
+              reads +g sin(pitch) (nose up positive)
+  gyro_rad_s  averaged gyro reading, rad/s: angular rate of B relative to inertial
+              space, the table at rest (a level gyro on x reads
+              Omega cos(lat) cos(psi + tau), positive towards north)
+  n_samples   number of samples averaged (>= 1), recorded for provenance
+
+Frames: N is NED; the table frame T is N turned by the 3-2-1 Euler angles (yaw
+psi, pitch theta, roll phi); the sensor block B is T turned by tau about z_T,
+right-handed (z_T points down, so positive tau turns x_B from x_T towards y_T:
+clockwise seen from above; on a level table x_B points at azimuth psi + tau).
+Which positions each method reads (POSITION_NEEDS in scenario.py): L1 x at 0, 90,
+180, 270; L3 the same on y; L2/L4 all rows on x/y (>= 3); L5 x at 0, 90, 180 and
+one z; A1c1 x at 0, 180; A1c2 x at 90, 270; A2 x at --a2-tau-deg; A3 the largest
+gyro reading on x; A4, A5 x at 0, 90, 180; A6 those and one z. A missing position
+is an error before any compute.
+
+Output (stdout, and --out as estimates.csv): method, quantity, estimate with the
+unit in the quantity's name: phi_deg, theta_deg (roll, pitch of T, deg), psi_deg
+(azimuth of x_T from north, clockwise, deg), acc_bias_ug (micro-g), acc_scale
+and gyro_scale (S = 1 + scale-factor error), gyro_bias_rad_s (rad/s).
 
 Inputs are validated with the same schema as scenario files; errors name the
 option, the value and what is allowed, and nothing is written on error.
@@ -90,14 +119,19 @@ def _simulate_readings(args: argparse.Namespace) -> int:
     return 0
 
 
-def main(argv: list[str] | None = None) -> int:
+def main(argv: list[str] | None = None, prog: str | None = None) -> int:
     parser = argparse.ArgumentParser(
-        prog="python -m pipeline.north_finding.cli",
+        prog=prog or "python -m pipeline.north_finding.cli",
         description=__doc__,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     sub = parser.add_subparsers(dest="command", required=True)
-    e = sub.add_parser("estimate", help="run the estimators on a readings CSV")
+    e = sub.add_parser(
+        "estimate",
+        help="run the estimators on a readings CSV",
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
     e.add_argument("--readings", required=True, help="readings CSV")
     e.add_argument("--lat-deg", required=True, type=float, help="geodetic latitude, deg (-90, 90)")
     e.add_argument("--g", required=True, type=float, help="local gravity, m/s^2 (> 0)")
