@@ -199,7 +199,7 @@ def numeric_residual(
 # CPU seconds (not wall-clock) that ``simplify`` gets per residual: a guard against a runaway
 # simplify, not a budget that shapes the output. The slowest residual of the three papers takes
 # about 9 s of CPU on an idle machine; a budget of 30 s was exceeded on a loaded one (eq. 57 of
-# north_finding came out unsimplified in one run of two), so the guard sits far above any
+# the north-finding paper came out unsimplified in one run of two), so the guard sits far above any
 # observed need. Hash randomisation is off in the workflow's jobs (PYTHONHASHSEED=0 in
 # pipeline/rules/common.smk), so SymPy's term order, hence simplify's result, is the same in
 # every run.

@@ -4,10 +4,10 @@ The rule of :mod:`derivations.checks` as a table: an audit check names its ``dis
 (a key of :data:`DISCREPANCIES`) and :func:`kind_of` gives its ``kind`` (one of
 ``pipeline.columns.DIFFERS_KINDS``), so the same discrepancy has the same kind in every
 paper. "One mark of the kind this OCR misreads" rests on what the seed texts show elsewhere:
-a subscript read as a denominator (north_finding eq. 58: omega_2 as '2'), two-line numerators
-read as fractions or sums (eqs. 52, 57), a symbol read as another (platform_drift eqs. 30,
+a subscript read as a denominator (the north-finding paper's eq. 58: omega_2 as '2'), two-line numerators
+read as fractions or sums (eqs. 52, 57), a symbol read as another (the platform-drift paper's eqs. 30,
 34: 'a' for alpha; 28: 'k_l' for k_I), a dot lost (eq. 35) and a subscript lost
-(altimeter_attitude eq. 12a: x for x_k). A slip of one mark is the paper's only when the
+(the altimeter-attitude paper's eq. 12a: x for x_k). A slip of one mark is the paper's only when the
 seed text repeats it or later equations carry it on; a missing or wrong term, factor or
 operator is the paper's when the seed text renders it legibly.
 
