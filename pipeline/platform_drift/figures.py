@@ -170,7 +170,7 @@ def _figure(
         ax.tick_params(labelbottom=False)  # the time axis is the difference panel's
         ax.set_xlabel("")
         ax.set_xticks([0, 3600, 7200])
-    head = f"Fig. {number} (reproduced)" if number else "Figure"
+    head = f"Fig. {number} (redrawn from our runs)" if number else "Figure"
     fig.suptitle(f"{head}: position error, proposed scheme vs strapdown, {label}")
     legend = legend_below(fig, mains, ncol=3)
     renderer = fig.canvas.get_renderer()

@@ -291,7 +291,7 @@ def _statistical(item: Mapping[str, Any], found: Found) -> Judged:
     )
     tolerance = (
         f"percentile rank in [{lo}, {hi}] of {of}, i.e. any value in "
-        f"[{q_lo:.10g}, {q_hi:.10g}] (a range {width:.3g} % of the published value wide)"
+        f"[{fmt_printed_plus(float(q_lo), printed)}, {fmt_printed_plus(float(q_hi), printed)}] (a range {width:.3g} % of the published value wide)"
     )
     reason = (
         f"published value at percentile rank {rank:.1f} of {of} "

@@ -82,7 +82,7 @@ def test_simulated_curve_drawn_visibly_on_the_strapdown_one(tmp_path):
             k_sim, k_strap = (list(STYLE).index(s) + 1 for s in ("proposed_simulated", "strapdown"))
             np.testing.assert_allclose(diff, (k_sim - k_strap) * t)  # simulated - strapdown, m
         assert fig.axes[0].get_ylabel() == "error (µm)"
-        assert "Fig. 5 (reproduced)" in fig._suptitle.get_text()
+        assert "Fig. 5 (redrawn from our runs)" in fig._suptitle.get_text()
     finally:
         plt.close(fig)
 
