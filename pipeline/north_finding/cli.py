@@ -30,6 +30,7 @@ from pipeline.config import ConfigError
 from pipeline.north_finding import columns as col
 from pipeline.north_finding import readings as rd
 from pipeline.north_finding.run import _readings, scenario_key
+from pipeline.north_finding.scan_bound import DEFAULT_ACCURACY_DEG
 from pipeline.north_finding.scenario import build_scenario, load_scenario
 
 __all__ = ["main"]
@@ -47,6 +48,7 @@ def _estimate(args: argparse.Namespace) -> int:
         "level_source": args.level_source,
         "methods": args.methods or ALL,
         "a2_tau_deg": args.a2_tau_deg,
+        "a3_accuracy_deg": args.a3_accuracy_deg,
         "decisions": [],
     }
     sc = build_scenario(raw, Path("<command line>"), base=Path("/"))
@@ -71,6 +73,7 @@ def _simulate_readings(args: argparse.Namespace) -> int:
         {
             "tau_deg": np.round(r.tau_deg, 9),
             "axis": r.axis,
+            "role": r.role,
             "accel_m_s2": r.accel[0],
             "gyro_rad_s": r.gyro[0],
             "n_samples": sc.n_samples,
@@ -111,6 +114,13 @@ def main(argv: list[str] | None = None) -> int:
     )
     e.add_argument(
         "--a2-tau-deg", type=float, default=45.0, help="table angle of azimuth method 2, deg"
+    )
+    e.add_argument(
+        "--a3-accuracy-deg",
+        type=float,
+        default=DEFAULT_ACCURACY_DEG,
+        help="accuracy option of azimuth method A3, deg: warn when the step of the peak scan "
+        "allows a larger azimuth error (default %(default)s)",
     )
     e.add_argument("--methods", nargs="+", choices=ALL, help="methods to run (default: all)")
     e.add_argument("--out", help="write estimates.csv here")
