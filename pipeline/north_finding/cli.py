@@ -96,7 +96,7 @@ def _simulate_readings(args: argparse.Namespace) -> int:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
         prog="python -m pipeline.north_finding.cli",
-        description=__doc__,
+        description=f"{__doc__}\n{rd.format_help()}",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     sub = parser.add_subparsers(dest="command", required=True)

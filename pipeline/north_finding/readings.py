@@ -48,7 +48,9 @@ separate readings):
 * ``z``: the one axis-z reading (L5, A6).
 
 Local gravity, Earth rate, latitude and the compass heading come from the scenario file (or
-the CLI). Worked example: a level-ish table at latitude 35.7 deg with psi = 30, theta = 2,
+the CLI).
+
+Worked example: a level-ish table at latitude 35.7 deg with psi = 30, theta = 2,
 phi = -1 deg and ideal sensors reads (``gen`` is the generated model the simulations use)
 
 >>> import numpy as np
@@ -93,6 +95,7 @@ __all__ = [
     "layout",
     "standard_normals",
     "check_needs",
+    "format_help",
 ]
 
 READINGS_COLUMNS = ["tau_deg", "axis", "role", "accel_m_s2", "gyro_rad_s", "n_samples"]
@@ -103,6 +106,20 @@ ROLES = ("fixed", "ls", "a2", "peak", "z")
 ROLE_AXES = {"fixed": ("x", "y"), "ls": ("x", "y"), "a2": ("x",), "peak": ("x",), "z": ("z",)}
 FIXED_TAU_DEG = (0.0, 90.0, 180.0, 270.0)
 TAU_TOL_DEG = 1e-6
+
+
+def format_help() -> str:
+    """The frames, signs and CSV format of this module's docstring (for the CLI's --help).
+
+    The worked example keeps its rows and drops its code lines.
+
+    >>> text = format_help()
+    >>> "role" in text and "0,x,fixed,0.342247,5.273817e-05,1000" in text and ">>>" not in text
+    True
+    """
+    lines = (__doc__ or "")[(__doc__ or "").index("Frames and signs") :].splitlines()
+    kept = [ln for ln in lines if not ln.lstrip().startswith((">>>", "..."))]
+    return "\n".join(kept).rstrip() + "\n(pipeline/north_finding/readings.py)\n"
 
 
 def _circular_diff(a: np.ndarray, b: float) -> np.ndarray:
