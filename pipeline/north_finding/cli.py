@@ -1,7 +1,7 @@
 """Command line: the paper's estimators on your own turntable readings.
 
 Estimate roll, pitch, azimuth and the sensor calibration from a readings CSV
-(format: ``pipeline/north_finding/readings.py``; one row per table position)::
+(format below and in ``pipeline/north_finding/readings_csv.py``; one row per reading)::
 
     python -m pipeline.north_finding.cli estimate --readings my_table.csv \\
         --lat-deg 35.7 --g 9.7966 --omega-ie 7.292115e-5 --compass-deg 80 \\
@@ -82,7 +82,7 @@ def _simulate_readings(args: argparse.Namespace) -> int:
     header = (
         f"# SIMULATED readings (not measured): scenario {sc.name}, trial {args.trial}, "
         f"N = {sc.n_samples} samples per position.\n"
-        f"# Columns: {', '.join(rd.READINGS_COLUMNS)} (see pipeline/north_finding/readings.py).\n"
+        f"# Columns: {', '.join(rd.READINGS_COLUMNS)} (see pipeline/north_finding/readings_csv.py).\n"
     )
 
     def write(p: Path) -> None:
