@@ -1,7 +1,7 @@
 """Command line: the paper's estimators on your own turntable readings.
 
 Estimate roll, pitch, azimuth and the sensor calibration from a readings CSV
-(one row per table position; format in pipeline/north_finding/readings.py)::
+(format below and in ``pipeline/north_finding/readings_csv.py``; one row per reading)::
 
     inertial-repro north-finding estimate --readings my_table.csv \\
         --lat-deg 35.7 --g 9.7966 --omega-ie 7.292115e-5 --compass-deg 80 \\
@@ -11,20 +11,6 @@ Write a readings CSV simulated from a scenario (for trying the format)::
 
     inertial-repro north-finding simulate-readings \\
         --scenario config/scenarios/north_finding/paper.yaml --out example.csv
-
-Readings CSV: a header, then one row per table position; lines starting with #
-are comments. Example row:  90,x,3.2807186,2.3616627e-05,1000000
-  tau_deg     table angle tau, deg, 0 <= tau_deg < 360
-  axis        sensor axis of B the reading is on: x (as mounted), y (mounted on
-              y_B: levelling methods L3, L4) or z (turned by -90 deg about y_B:
-              methods L5, A6)
-  accel_m_s2  averaged accelerometer reading, m/s^2: specific force f = -g at
-              rest, so a level sensor on z (down) reads about -9.8 and one on x
-              reads +g sin(pitch) (nose up positive)
-  gyro_rad_s  averaged gyro reading, rad/s: angular rate of B relative to inertial
-              space, the table at rest (a level gyro on x reads
-              Omega cos(lat) cos(psi + tau), positive towards north)
-  n_samples   number of samples averaged (>= 1), recorded for provenance
 
 Frames: N is NED; the table frame T is N turned by the 3-2-1 Euler angles (yaw
 psi, pitch theta, roll phi); the sensor block B is T turned by tau about z_T,
@@ -59,6 +45,7 @@ from pipeline.config import ConfigError
 from pipeline.north_finding import columns as col
 from pipeline.north_finding import readings as rd
 from pipeline.north_finding.run import _readings, scenario_key
+from pipeline.north_finding.scan_bound import DEFAULT_ACCURACY_DEG
 from pipeline.north_finding.scenario import build_scenario, load_scenario
 
 __all__ = ["main"]
@@ -76,6 +63,7 @@ def _estimate(args: argparse.Namespace) -> int:
         "level_source": args.level_source,
         "methods": args.methods or ALL,
         "a2_tau_deg": args.a2_tau_deg,
+        "a3_accuracy_deg": args.a3_accuracy_deg,
         "decisions": [],
     }
     sc = build_scenario(raw, Path("<command line>"), base=Path("/"))
@@ -100,6 +88,7 @@ def _simulate_readings(args: argparse.Namespace) -> int:
         {
             "tau_deg": np.round(r.tau_deg, 9),
             "axis": r.axis,
+            "role": r.role,
             "accel_m_s2": r.accel[0],
             "gyro_rad_s": r.gyro[0],
             "n_samples": sc.n_samples,
@@ -108,7 +97,7 @@ def _simulate_readings(args: argparse.Namespace) -> int:
     header = (
         f"# SIMULATED readings (not measured): scenario {sc.name}, trial {args.trial}, "
         f"N = {sc.n_samples} samples per position.\n"
-        f"# Columns: {', '.join(rd.READINGS_COLUMNS)} (see pipeline/north_finding/readings.py).\n"
+        f"# Columns: {', '.join(rd.READINGS_COLUMNS)} (see pipeline/north_finding/readings_csv.py).\n"
     )
 
     def write(p: Path) -> None:
@@ -122,14 +111,14 @@ def _simulate_readings(args: argparse.Namespace) -> int:
 def main(argv: list[str] | None = None, prog: str | None = None) -> int:
     parser = argparse.ArgumentParser(
         prog=prog or "python -m pipeline.north_finding.cli",
-        description=__doc__,
+        description=f"{__doc__}\n{rd.format_help()}",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     sub = parser.add_subparsers(dest="command", required=True)
     e = sub.add_parser(
         "estimate",
         help="run the estimators on a readings CSV",
-        description=__doc__,
+        description=f"{__doc__}\n{rd.format_help()}",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     e.add_argument("--readings", required=True, help="readings CSV")
@@ -145,6 +134,13 @@ def main(argv: list[str] | None = None, prog: str | None = None) -> int:
     )
     e.add_argument(
         "--a2-tau-deg", type=float, default=45.0, help="table angle of azimuth method 2, deg"
+    )
+    e.add_argument(
+        "--a3-accuracy-deg",
+        type=float,
+        default=DEFAULT_ACCURACY_DEG,
+        help="accuracy option of azimuth method A3, deg: warn when the step of the peak scan "
+        "allows a larger azimuth error (default %(default)s)",
     )
     e.add_argument("--methods", nargs="+", choices=ALL, help="methods to run (default: all)")
     e.add_argument("--out", help="write estimates.csv here")

@@ -2,8 +2,21 @@
 
 from __future__ import annotations
 
-# results/<slug>/<scenario>/estimates.csv
-ESTIMATE_COLUMNS = ["sensor", "method", "quantity", "truth", "estimate", "error_pct"]
+# results/<slug>/<scenario>/estimates.csv; scan_bound_deg: for A3's psi, the bound (deg) on its
+# error from the step of the peak scan (pipeline/north_finding/scan_bound.py; 0 when the table
+# stops at the true tau*, empty for other rows); flag: a3_scan_bound_exceeds_accuracy when that
+# bound exceeds the scenario's a3_accuracy_deg, a3_scan_bound_unknown when no bound can be
+# computed (fewer than 2 peak readings), else empty
+ESTIMATE_COLUMNS = [
+    "sensor",
+    "method",
+    "quantity",
+    "truth",
+    "estimate",
+    "error_pct",
+    "scan_bound_deg",
+    "flag",
+]
 SENSORS = ("ideal", "real")
 
 # results/<slug>/<scenario>/mc_summary.csv

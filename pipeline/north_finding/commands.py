@@ -14,7 +14,7 @@ COMMANDS = {
     "north-finding": Command(
         "pipeline.north_finding.cli",
         "levelling, north finding and sensor calibration from turntable readings: 'estimate' "
-        "reads a readings CSV, one row per table position, columns tau_deg, axis, accel_m_s2, "
+        "reads a readings CSV, one row per reading, columns tau_deg, axis, role, accel_m_s2, "
         "gyro_rad_s, n_samples (table angle tau about the table's z axis, deg; averaged "
         "specific force, m/s^2, and angular rate, rad/s); 'simulate-readings' writes one",
     ),

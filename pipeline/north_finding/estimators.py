@@ -194,8 +194,12 @@ def azimuth(
     prior: np.ndarray,
     a2_tau_deg: float | None,
     trouble: Trouble | None = None,
+    bounds: dict[str, np.ndarray] | None = None,
 ) -> Estimates:
-    """Azimuth methods A1c1..A6 (eqs. 40-71); theta, phi, prior are per-trial arrays (rad)."""
+    """Azimuth methods A1c1..A6 (eqs. 40-71); theta, phi, prior are per-trial arrays (rad).
+
+    Given ``bounds``, stores there under "A3" the per-trial bound (deg) on A3's error from the
+    step of its peak scan (:func:`pipeline.north_finding.scan_bound.a3_scan_bound_deg`)."""
     out: Estimates = {}
     gyr = readings.gyro
     lat, om = site.lat, site.omega_ie
@@ -217,14 +221,19 @@ def azimuth(
         if a2_tau_deg is None:
             col = readings.columns("x", "a2")[0]
         else:
-            col = readings.index("x", a2_tau_deg, "A2")
+            col = readings.index("x", a2_tau_deg, "A2", "a2")
         tau = np.deg2rad(readings.tau_deg[col])
         out["A2", "psi_deg"] = deg(a2_psi(gyr[:, col], tau, om, lat, theta, phi, prior, trouble))
     if "A3" in methods:
-        cols = readings.columns("x", "max")
+        cols = readings.columns("x", "peak")
         w_max = gyr[:, cols].max(axis=1)
         coeffs = gen.a3_eq47_coeffs(w_max, om, lat, theta, phi)
         out["A3", "psi_deg"] = deg(solve_quartic_psi(coeffs, prior, trouble))
+        if bounds is not None:
+            from pipeline.north_finding.scan_bound import a3_scan_bound_deg  # imports this module
+
+            tau_scan = readings.tau_deg[cols]
+            bounds["A3"] = a3_scan_bound_deg(tau_scan, gyr[:, cols], om, lat, theta, phi, prior)
     if {"A4", "A5", "A6"} & set(methods):
         w0, w90, w180 = wx(0, "A4"), wx(90, "A4"), wx(180, "A4")
         bias = gen.a4_bias(w0, w180)
@@ -262,8 +271,10 @@ def estimate_all(
     prior: np.ndarray,
     a2_tau_deg: float | None,
     trouble: Trouble | None = None,
+    bounds: dict[str, np.ndarray] | None = None,
 ) -> Estimates:
-    """Run every requested method, counting numerical trouble in ``trouble`` if given.
+    """Run every requested method, counting numerical trouble in ``trouble`` if given (and
+    A3's scan bound in ``bounds``, see :func:`azimuth`).
     ``level_source`` is 'truth' (use ``truth_level`` =
     (theta, phi) in rad) or a levelling method id whose estimates feed the azimuth methods."""
     out = levelling(
@@ -280,5 +291,7 @@ def estimate_all(
     az_methods = tuple(m for m in methods if m.startswith("A"))
     if az_methods:
         prior = np.broadcast_to(np.asarray(prior, dtype=float), (n,))
-        out.update(azimuth(readings, site, az_methods, theta, phi, prior, a2_tau_deg, trouble))
+        out.update(
+            azimuth(readings, site, az_methods, theta, phi, prior, a2_tau_deg, trouble, bounds)
+        )
     return out

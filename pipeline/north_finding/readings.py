@@ -2,25 +2,9 @@
 
 A :class:`Readings` holds one averaged accelerometer and one averaged gyro
 reading per table position, for every Monte Carlo trial: arrays of shape
-``(n_trials, n_positions)``. Simulated and user readings go through the same
-estimators.
-
-Readings CSV (one row per table position)
------------------------------------------
-=============  =============================================================
-column         meaning
-=============  =============================================================
-tau_deg        table angle tau in degrees, [0, 360)
-axis           axis of B the sensors' sensitive axes point along: x (as
-               mounted), y (mounted on y_B, levelling methods 3, 4) or z
-               (turned by -90 deg about y_B, methods L5, A6)
-accel_m_s2     averaged accelerometer reading, m/s^2 (specific force)
-gyro_rad_s     averaged gyro reading, rad/s
-n_samples      number of samples averaged (>= 1), recorded for provenance
-=============  =============================================================
-
-Lines starting with ``#`` are comments. Local gravity, Earth rate, latitude and
-the compass heading come from the scenario file (or the CLI).
+``(n_trials, n_positions)``, with each position's table angle, axis and role. Simulated and
+user readings go through the same estimators. The frames, signs and CSV format (columns,
+units, roles, a worked example) are in :mod:`pipeline.north_finding.readings_csv`.
 """
 
 from __future__ import annotations
@@ -29,16 +13,24 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import pandas as pd
 
-from pipeline.config import ConfigError
 from pipeline.generated import north_finding as gen
+from pipeline.north_finding.readings_csv import (
+    AXES,
+    READINGS_COLUMNS,
+    ROLES,
+    TAU_TOL_DEG,
+    circular_diff,
+    format_help,
+    read_readings_frame,
+)
 from pipeline.north_finding.scenario import POSITION_NEEDS, Scenario, SensorErrors
 
 __all__ = [
     "Readings",
     "READINGS_COLUMNS",
     "AXES",
+    "ROLES",
     "load_readings_csv",
     "simulation_positions",
     "simulate",
@@ -46,11 +38,8 @@ __all__ = [
     "layout",
     "standard_normals",
     "check_needs",
+    "format_help",
 ]
-
-READINGS_COLUMNS = ["tau_deg", "axis", "accel_m_s2", "gyro_rad_s", "n_samples"]
-AXES = ("x", "y", "z")
-TAU_TOL_DEG = 1e-6
 
 
 @dataclass(frozen=True)
@@ -61,28 +50,33 @@ class Readings:
     axis: np.ndarray  # (P,) of 'x' | 'y' | 'z'
     accel: np.ndarray  # (T, P) m/s^2
     gyro: np.ndarray  # (T, P) rad/s
-    role: np.ndarray  # (P,) of '' | 'ls' | 'a2' | 'max'; '' for user readings
+    role: np.ndarray  # (P,) of ROLES
 
     @property
     def n_trials(self) -> int:
         return self.accel.shape[0]
 
-    def index(self, axis: str, tau_deg: float, method: str) -> int:
-        """Column of the reading on ``axis`` at ``tau_deg``; ValueError naming the method if absent."""
-        diff = np.abs((self.tau_deg - tau_deg + 180.0) % 360.0 - 180.0)
-        hits = np.flatnonzero((self.axis == axis) & (diff < TAU_TOL_DEG))
+    def index(self, axis: str, tau_deg: float, method: str, role: str = "fixed") -> int:
+        """Column of the ``role`` reading on ``axis`` at ``tau_deg``; ValueError naming the
+        method if absent."""
+        hits = np.flatnonzero(
+            (self.axis == axis)
+            & (self.role == role)
+            & (circular_diff(self.tau_deg, tau_deg) < TAU_TOL_DEG)
+        )
         if hits.size == 0:
-            have = sorted(set(self.tau_deg[self.axis == axis].round(6).tolist()))
+            on = (self.axis == axis) & (self.role == role)
+            have = sorted(set(self.tau_deg[on].round(6).tolist()))
             raise ValueError(
-                f"method {method} needs a reading on axis {axis} at tau = {tau_deg:g} deg; "
-                f"the readings on axis {axis} are at {have} deg"
+                f"method {method} needs a reading on axis {axis} with role {role} at tau = "
+                f"{tau_deg:g} deg; the role-{role} readings on axis {axis} are at {have} deg"
             )
         return int(hits[0])
 
     def columns(self, axis: str, role: str | None = None) -> np.ndarray:
-        """Columns on ``axis``; with ``role``, those of that role if any are marked, else all."""
+        """Columns on ``axis`` (of ``role`` if given)."""
         on_axis = self.axis == axis
-        if role is not None and np.any(on_axis & (self.role == role)):
+        if role is not None:
             on_axis &= self.role == role
         return np.flatnonzero(on_axis)
 
@@ -98,7 +92,7 @@ def check_needs(readings: Readings, methods: tuple[str, ...], a2_tau_deg: float 
                 if n < 3:
                     raise ValueError(
                         f"method {method} (least squares) needs at least 3 table positions on axis "
-                        f"{axis}; the readings have {n}"
+                        f"{axis} with role ls; the readings have {n}"
                     )
             elif pos == "a2":
                 if a2_tau_deg is None:
@@ -107,58 +101,27 @@ def check_needs(readings: Readings, methods: tuple[str, ...], a2_tau_deg: float 
                             f"method {method} needs a2_tau_deg (the table angle it uses)"
                         )
                 else:
-                    readings.index(axis, a2_tau_deg, method)
+                    readings.index(axis, a2_tau_deg, method, "a2")
+            elif pos == "peak":
+                if readings.columns(axis, "peak").size == 0:
+                    raise ValueError(
+                        f"method {method} needs the scan of its maximum: readings on axis {axis} "
+                        "with role peak"
+                    )
             elif readings.columns(axis).size == 0:
-                raise ValueError(f"method {method} needs at least one reading on axis {axis}")
+                raise ValueError(f"method {method} needs the reading on axis {axis} (role z)")
 
 
 def load_readings_csv(path: str | Path) -> Readings:
-    """Read a user's readings CSV (format in the module docstring); errors name row and column."""
-    path = Path(path)
-    try:
-        frame = pd.read_csv(path, comment="#", skipinitialspace=True)
-    except (OSError, pd.errors.ParserError, pd.errors.EmptyDataError) as exc:
-        raise ConfigError(f"{path}: cannot read readings CSV: {exc}") from exc
-    missing = [c for c in READINGS_COLUMNS if c not in frame.columns]
-    if missing:
-        raise ConfigError(
-            f"{path}: missing columns {missing}; a readings CSV has columns {READINGS_COLUMNS}"
-        )
-    extra = [c for c in frame.columns if c not in READINGS_COLUMNS]
-    if extra:
-        raise ConfigError(f"{path}: unknown columns {extra}; allowed: {READINGS_COLUMNS}")
-    if frame.empty:
-        raise ConfigError(f"{path}: no readings")
-    for col in ("tau_deg", "accel_m_s2", "gyro_rad_s", "n_samples"):
-        values = pd.to_numeric(frame[col], errors="coerce")
-        bad = values.isna() | ~np.isfinite(values)
-        if bad.any():
-            row = int(np.flatnonzero(bad)[0])
-            raise ConfigError(
-                f"{path}: row {row + 1}, column {col} = {frame[col].iloc[row]!r}: must be a finite number"
-            )
-        frame[col] = values
-    bad_tau = (frame["tau_deg"] < 0) | (frame["tau_deg"] >= 360)
-    if bad_tau.any():
-        row = int(np.flatnonzero(bad_tau)[0])
-        raise ConfigError(
-            f"{path}: row {row + 1}, column tau_deg = {frame['tau_deg'].iloc[row]}: allowed 0 <= tau_deg < 360"
-        )
-    bad_axis = ~frame["axis"].isin(AXES)
-    if bad_axis.any():
-        row = int(np.flatnonzero(bad_axis)[0])
-        raise ConfigError(
-            f"{path}: row {row + 1}, column axis = {frame['axis'].iloc[row]!r}: allowed {list(AXES)}"
-        )
-    if (frame["n_samples"] < 1).any():
-        row = int(np.flatnonzero(frame["n_samples"] < 1)[0])
-        raise ConfigError(f"{path}: row {row + 1}, column n_samples: must be >= 1")
+    """Read a user's readings CSV (format in :mod:`pipeline.north_finding.readings_csv`);
+    errors name the file, the row, the column, the value and what is allowed."""
+    frame = read_readings_frame(path)
     return Readings(
         tau_deg=frame["tau_deg"].to_numpy(float),
         axis=frame["axis"].to_numpy(str),
         accel=frame["accel_m_s2"].to_numpy(float)[None, :],
         gyro=frame["gyro_rad_s"].to_numpy(float)[None, :],
-        role=np.full(len(frame), "", dtype="<U3"),
+        role=frame["role"].to_numpy(str).astype("<U5"),
     )
 
 
@@ -166,21 +129,22 @@ def simulation_positions(sc: Scenario) -> tuple[np.ndarray, np.ndarray, np.ndarr
     """Table positions (tau_deg, axis, role) a simulated scenario reads.
 
     Fixed positions 0/90/180/270 on x and y, z once, the least-squares set on x and
-    y, the method-2 angle, and the method-3 maximum (tau* of eq. 52 or a scan).
+    y, the method-2 angle, and the method-3 peak (tau* of eq. 52 or a scan); roles as in a
+    readings CSV.
     """
     taus: list[float] = []
     axes: list[str] = []
     roles: list[str] = []
 
-    def add(axis: str, tau: float, role: str = "") -> None:
+    def add(axis: str, tau: float, role: str) -> None:
         taus.append(float(tau) % 360.0)
         axes.append(axis)
         roles.append(role)
 
     for axis in ("x", "y"):
         for tau in (0.0, 90.0, 180.0, 270.0):
-            add(axis, tau)
-    add("z", 0.0)
+            add(axis, tau, "fixed")
+    add("z", 0.0, "z")
     for axis in ("x", "y"):
         for tau in sc.ls_positions_deg():
             add(axis, tau, "ls")
@@ -189,11 +153,11 @@ def simulation_positions(sc: Scenario) -> tuple[np.ndarray, np.ndarray, np.ndarr
     if ms["mode"] == "analytic":
         t = sc.truth
         tau_star, _ = gen.a3_peak(sc.omega_ie, sc.lat, t["psi"], t["theta"], t["phi"])
-        add("x", np.rad2deg(tau_star), "max")
+        add("x", np.rad2deg(tau_star), "peak")
     else:
         for tau in np.arange(0.0, 360.0, ms["step_deg"]):
-            add("x", tau, "max")
-    return np.array(taus), np.array(axes), np.array(roles, dtype="<U3")
+            add("x", tau, "peak")
+    return np.array(taus), np.array(axes), np.array(roles, dtype="<U5")
 
 
 def layout(sc: Scenario) -> Readings:

@@ -25,6 +25,7 @@ from pipeline.north_finding.columns import (
     SENSORS,
 )
 from pipeline.north_finding.report_trouble import trouble_blocks
+from pipeline.north_finding.scan_bound import warnings as scan_warnings
 from pipeline.report.html import format_value, slugify
 from pipeline.report.model import Block, Paragraph, Section, frame_table, not_available
 from pipeline.report.plain import plain_value
@@ -242,6 +243,7 @@ def scenario_section(d: Path) -> Section:
             frame_table(_estimates_pivot(est, sensor), caption=f"{sensor} sensor")
             for sensor in SENSORS
         ]
+        estimates += [Paragraph(f"Note: {note}.") for note in scan_warnings(est)]
     mcs = read_csv(d / "mc_summary.csv", MC_SUMMARY_COLUMNS)
     mc: list[Block] = [
         not_available("mc_summary.csv")

@@ -45,6 +45,7 @@ from pipeline.atomic import write_csv, write_json
 from pipeline.north_finding import columns as col
 from pipeline.north_finding import estimators as est
 from pipeline.north_finding import readings as rd
+from pipeline.north_finding import scan_bound as sb
 from pipeline.north_finding.ranking import ranking_frames
 from pipeline.north_finding.scenario import ROOT, Scenario, load_scenario
 from pipeline.north_finding.trouble import TROUBLE_COLUMNS, Trouble
@@ -103,11 +104,19 @@ def _ordered(estimates: est.Estimates) -> list[tuple[str, str]]:
     return [(m, q) for m in col.METHODS for q in col.METHOD_QUANTITIES[m] if (m, q) in estimates]
 
 
-def estimates_frame(estimates: est.Estimates, truth: dict[str, float], sensor: str) -> pd.DataFrame:
-    """One row per (method, quantity) of a single-trial run."""
+def estimates_frame(
+    estimates: est.Estimates,
+    truth: dict[str, float],
+    sensor: str,
+    bounds: dict[str, np.ndarray] | None = None,
+    accuracy_deg: float = sb.DEFAULT_ACCURACY_DEG,
+) -> pd.DataFrame:
+    """One row per (method, quantity) of a single-trial run; A3's psi carries its scan bound
+    (``bounds``, deg) and the flag against ``accuracy_deg``."""
     rows = []
     for m, q in _ordered(estimates):
         value = float(estimates[m, q][0])
+        bound = float(bounds[m][0]) if bounds and m in bounds and q == "psi_deg" else np.nan
         rows.append(
             {
                 "sensor": sensor,
@@ -116,6 +125,8 @@ def estimates_frame(estimates: est.Estimates, truth: dict[str, float], sensor: s
                 "truth": truth[q],
                 "estimate": value,
                 "error_pct": float(_error_pct(value, truth[q], q)),
+                "scan_bound_deg": bound,
+                "flag": sb.flag(bound, accuracy_deg) if m == "A3" and bounds is not None else "",
             }
         )
     return pd.DataFrame(rows, columns=col.ESTIMATE_COLUMNS)
@@ -175,6 +186,7 @@ class _Runner:
         n_samples: int,
         methods=None,
         trouble: Trouble | None = None,
+        bounds: dict[str, np.ndarray] | None = None,
     ):
         sc = self.sc
         methods = methods or sc.methods
@@ -191,6 +203,7 @@ class _Runner:
             prior,
             sc.table["a2_tau_deg"],
             trouble,
+            bounds,
         )
 
 
@@ -201,17 +214,27 @@ def _simulated(sc: Scenario, log) -> dict[str, pd.DataFrame]:
     attitude = tuple(m for m in sc.methods if m not in CALIBRATION_METHODS)
     # ideal: perfect sensor for attitude methods, nominal S and b for calibration methods
     ideal: est.Estimates = {}
+    b_ideal: dict[str, np.ndarray] = {}
+    b_real: dict[str, np.ndarray] = {}
     if attitude:
-        ideal.update(runner.run(ALL_SOURCES, None, 1, attitude))
+        ideal.update(runner.run(ALL_SOURCES, None, 1, attitude, bounds=b_ideal))
     if calib:
         ideal.update(runner.run(("misalignment", "noise"), None, 1, calib))
     # truth of the ideal runs: the attitude is the same; S and b are the nominal ones
     trouble0 = Trouble()
-    real0 = runner.run(("noise",), None, 1, trouble=trouble0)
+    real0 = runner.run(("noise",), None, 1, trouble=trouble0, bounds=b_real)
+    if sc.table["max_search"]["mode"] == "analytic" and "A3" in b_real:
+        b_ideal["A3"] = b_real["A3"] = np.zeros(1)  # read at the true tau*: no sampling error
+    accuracy = sb.accuracy_deg(sc.raw)
     estimates = pd.concat(
-        [estimates_frame(ideal, truth, "ideal"), estimates_frame(real0, truth, "real")],
+        [
+            estimates_frame(ideal, truth, "ideal", b_ideal, accuracy),
+            estimates_frame(real0, truth, "real", b_real, accuracy),
+        ],
         ignore_index=True,
     )
+    for note in sb.warnings(estimates, accuracy):
+        log(f"warning: {sc.name}: {note}")
     log(f"{sc.name}: ideal and noise-free real runs done")
 
     n_pos = rd.simulation_positions(sc)[0].size
@@ -325,6 +348,7 @@ def _readings(sc: Scenario, log) -> dict[str, pd.DataFrame]:
     site = est.Site(sc.lat, sc.g, sc.omega_ie)
     level = (sc.truth["theta"], sc.truth["phi"]) if sc.truth else None
     trouble = Trouble()
+    bounds: dict[str, np.ndarray] = {}
     out = est.estimate_all(
         readings,
         site,
@@ -334,10 +358,13 @@ def _readings(sc: Scenario, log) -> dict[str, pd.DataFrame]:
         np.array([sc.compass_heading]),
         a2_tau,
         trouble,
+        bounds,
     )
     log(f"{sc.name}: estimated from {sc.readings_csv.name} ({readings.tau_deg.size} positions)")
     frames = {k: _empty(k) for k in OUTPUTS}
-    frames["estimates"] = estimates_frame(out, truth, "real")
+    frames["estimates"] = estimates_frame(out, truth, "real", bounds, sb.accuracy_deg(sc.raw))
+    for note in sb.warnings(frames["estimates"], sb.accuracy_deg(sc.raw)):
+        log(f"warning: {sc.readings_csv.name}: {note}")
     frames["numerical_trouble"] = trouble.frame(out, "readings")
     return frames
 

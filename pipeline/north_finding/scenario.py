@@ -32,20 +32,20 @@ DEG_PER_H = np.pi / (180 * 3600)  # 1 deg/h in rad/s
 MICRO_G = 1e-6
 
 # Table positions (axis, tau_deg) each method reads; "ls" = the least-squares set,
-# "a2" = the method-2 angle, "max" = the method-3 maximum search.
+# "a2" = the method-2 angle, "peak" = the method-3 maximum search.
 POSITION_NEEDS: dict[str, tuple[tuple[str, float | str], ...]] = {
     "L1": (("x", 0.0), ("x", 90.0), ("x", 180.0), ("x", 270.0)),
     "L2": (("x", "ls"),),
     "L3": (("y", 0.0), ("y", 90.0), ("y", 180.0), ("y", 270.0)),
     "L4": (("y", "ls"),),
-    "L5": (("x", 0.0), ("x", 90.0), ("x", 180.0), ("z", "any")),
+    "L5": (("x", 0.0), ("x", 90.0), ("x", 180.0), ("z", "z")),
     "A1c1": (("x", 0.0), ("x", 180.0)),
     "A1c2": (("x", 90.0), ("x", 270.0)),
     "A2": (("x", "a2"),),
-    "A3": (("x", "max"),),
+    "A3": (("x", "peak"),),
     "A4": (("x", 0.0), ("x", 90.0), ("x", 180.0)),
     "A5": (("x", 0.0), ("x", 90.0), ("x", 180.0)),
-    "A6": (("x", 0.0), ("x", 90.0), ("x", 180.0), ("z", "any")),
+    "A6": (("x", 0.0), ("x", 90.0), ("x", 180.0), ("z", "z")),
 }
 MIN_LS_POSITIONS = 3  # eqs. 21, 26: "n >= 3"
 
@@ -217,6 +217,19 @@ def _check_semantics(sc: Scenario) -> None:
             raise ConfigError(
                 f"{sc.path}: readings_csv = {sc.raw.get('readings_csv')!r}: file not found"
             )
+        _check_readings(sc)
+
+
+def _check_readings(sc: Scenario) -> None:
+    """Load the readings CSV (its errors name the file, row, column and value) and check that
+    every method finds the readings it needs, before any compute."""
+    from pipeline.north_finding import readings as rd  # readings imports this module
+
+    readings = rd.load_readings_csv(sc.readings_csv)
+    try:
+        rd.check_needs(readings, sc.methods, sc.raw.get("a2_tau_deg"))
+    except ValueError as exc:
+        raise ConfigError(f"{sc.path}: readings_csv {sc.readings_csv.name}: {exc}") from exc
 
 
 def _check_n_inference(sc: Scenario) -> None:

@@ -22,7 +22,24 @@ import numpy as np
 from pipeline.generated import platform_drift as gen
 from pipeline.platform_drift.scenario import Scenario
 
-__all__ = ["constants", "error_m"]
+__all__ = ["constants", "error_m", "eq36_undefined"]
+
+
+def eq36_undefined(sc: Scenario) -> str:
+    """Why eq. 36 cannot be evaluated in ``sc`` (it divides by omega_e sin(lat0)), or "".
+
+    >>> from types import SimpleNamespace as NS
+    >>> eq36_undefined(NS(route=NS(lat0=0.0), name="equator"))[:40]
+    'eq. 36 divides by omega_e sin(lat0), and'
+    >>> eq36_undefined(NS(route=NS(lat0=0.6), name="tehran"))
+    ''
+    """
+    if np.sin(sc.route.lat0) != 0.0:
+        return ""
+    return (
+        f"eq. 36 divides by omega_e sin(lat0), and scenario {sc.name} starts at latitude 0: its "
+        "channel-3 analytic curve is undefined"
+    )
 
 
 def constants(sc: Scenario) -> dict[str, float]:
@@ -48,7 +65,8 @@ def constants(sc: Scenario) -> dict[str, float]:
 
 
 def error_m(sc: Scenario, case: str, t: np.ndarray) -> np.ndarray:
-    """Analytic position error (m) of the proposed scheme at times ``t`` for ``case``."""
+    """Analytic position error (m) of the proposed scheme at times ``t`` for ``case``; NaN where
+    the case has a channel-3 drift and eq. 36 is undefined (:func:`eq36_undefined`)."""
     c = constants(sc)
     b1, _, b3 = sc.platform_drift(case)
     t = np.asarray(t, dtype=float)
@@ -59,6 +77,8 @@ def error_m(sc: Scenario, case: str, t: np.ndarray) -> np.ndarray:
         p1, q1 = gen.error_ch1(t, b1, c["k_sh_1_s2"])
         p_int = p_int + np.asarray(p1, dtype=float)
         q_int = q_int + np.asarray(q1, dtype=float)
+    if b3 != 0.0 and eq36_undefined(sc):
+        return np.full_like(t, np.nan)
     if b3 != 0.0:
         p3, q3 = gen.error_ch3(
             t, b3, sc.earth.omega_e, sc.route.lat0, sc.psi0, c["k_sh_1_s2"], c["alpha_rad"]

@@ -126,10 +126,7 @@ def build_scenario(raw: Any, path: Path) -> Scenario:
             f"{path}: start.lat_deg = {s['lat_deg']!r}: must lie in "
             f"[-{MAX_PATH_LAT_DEG:g}, {MAX_PATH_LAT_DEG:g}] (eq. 16 is singular at the poles)"
         )
-    if s["lat_deg"] == 0:
-        raise ConfigError(
-            f"{path}: start.lat_deg = 0: must be non-zero (eq. 36 divides by omega_e sin(lat0))"
-        )
+    # latitude 0 is allowed: eq. 36 (which divides by sin(lat0)) is then not_checkable
     moving = p["delta_lat_deg"] != 0 or p["delta_lon_deg"] != 0
     if moving and 2 * p["ramp_s"] > p["travel_time_s"]:
         raise ConfigError(

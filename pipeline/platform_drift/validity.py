@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 
 from pipeline.generated import platform_drift as gen
+from pipeline.platform_drift.analytic import eq36_undefined
 from pipeline.platform_drift.scenario import Scenario
 
 __all__ = [
@@ -80,7 +81,13 @@ def at_rest_invalid(results: Mapping[str, Any], scenario: str, what: str) -> str
 
 
 def analytic_invalid(results: Mapping[str, Any], scenario: str, case: str) -> str:
-    """Why the analytic curve (eqs. 32/36) of ``case`` does not hold in ``scenario``, or ``""``."""
+    """Why the analytic curve (eqs. 32/36) of ``case`` does not hold in ``scenario``, or ``""``:
+    a moving vehicle, or a channel-3 drift at latitude 0 (eq. 36 divides by sin(lat0))."""
+    sc = results.get(scenario, {}).get("scenario")
+    if sc is not None and sc.platform_drift(case)[2] != 0.0:
+        why = eq36_undefined(sc)
+        if why:
+            return why
     return at_rest_invalid(results, scenario, EQUATIONS[case])
 
 

@@ -54,7 +54,7 @@ def levelling(offset: dict | None = None, audit: bool = True) -> dict[str, Any]:
         trials.append(pd.DataFrame({"trial": np.arange(400), "method": m, "quantity": q, "truth": t, "estimate": sample, "error_pct": 100 * (sample - t) / t}))  # fmt: skip
     audit_frame = pd.DataFrame({"equation": ["25", "26"], "status": ["match", "match"], "residual": ["0", "0"], "note": ["", ""]})  # fmt: skip
     return {
-        "estimates": pd.DataFrame(est, columns=col.ESTIMATE_COLUMNS),
+        "estimates": pd.DataFrame(est, columns=col.ESTIMATE_COLUMNS[:6]),
         "mc_trials": pd.concat(trials, ignore_index=True)[col.MC_TRIAL_COLUMNS],
         "error_budget": pd.DataFrame(columns=col.ERROR_BUDGET_COLUMNS),
         "ranking": pd.DataFrame(columns=col.RANKING_COLUMNS),
@@ -143,7 +143,7 @@ def _azimuth(scan_errors: np.ndarray) -> dict[str, Any]:
     return {
         **levelling(),
         "estimates": pd.DataFrame(
-            [("real", "A2", "psi_deg", 88.0, 87.9499, -0.0569)], columns=col.ESTIMATE_COLUMNS
+            [("real", "A2", "psi_deg", 88.0, 87.9499, -0.0569)], columns=col.ESTIMATE_COLUMNS[:6]
         ),  # fmt: skip
         "mc_trials": pd.DataFrame(
             {
@@ -196,7 +196,7 @@ def test_same_positions_and_identical_trials_make_one_estimator() -> None:
                     ("real", "A4", "gyro_scale", 1.00002, 1.0000175, -2.5e-4),
                     ("real", "A5", "gyro_scale", 1.00002, 1.0000175, -2.5e-4),
                 ],
-                columns=col.ESTIMATE_COLUMNS,
+                columns=col.ESTIMATE_COLUMNS[:6],
             ),  # fmt: skip
         }
 
@@ -211,7 +211,7 @@ def test_accelerometer_bias_cause_scales_the_misalignment() -> None:
     res = {
         **levelling(),
         "estimates": pd.DataFrame(
-            [("real", "L5", "acc_bias_ug", 100.0, 73.01, -26.99)], columns=col.ESTIMATE_COLUMNS
+            [("real", "L5", "acc_bias_ug", 100.0, 73.01, -26.99)], columns=col.ESTIMATE_COLUMNS[:6]
         ),  # fmt: skip
         "error_budget": pd.DataFrame(
             [("L5", "acc_bias_ug", "misalignment", -26.99, -26.99)],

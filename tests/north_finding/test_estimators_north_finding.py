@@ -473,17 +473,16 @@ def test_readings_csv_round_trip_equals_monte_carlo_trial_0(tmp_path, paper):
     cli = cli.set_index(["method", "quantity"])["estimate"]
     assert set(cli.index) == set(trial0.index)
 
-    # The simulation marks the least-squares positions (role 'ls'); a user's CSV has no roles,
-    # so L2 and L4 use every reading on their axis (fixed, LS, method-2 and method-3 positions).
-    # Every other method reads the same positions in both paths and must agree.
+    # The CSV carries each reading's role (fixed, ls, a2, peak, z) as the simulation lays them
+    # out, so every method reads the same positions in both paths and must agree.
     for key, value in trial0.items():
-        if key[0] in ("L2", "L4"):
-            continue
         assert cli[key] == pytest.approx(value, rel=1e-12, abs=1e-15), key
 
-    # L2, L4 on the CSV: least squares over all readings of the axis, written from eq. 17 and
-    # the a_y row of eq. 24 (still table) -- independent of the generated design rows.
+    # L2, L4 on the CSV: least squares over the role-ls readings of the axis, written from eq. 17
+    # and the a_y row of eq. 24 (still table) -- independent of the generated design rows.
     frame = pd.read_csv(csv, comment="#")
+    assert set(frame["role"]) == {"fixed", "ls", "a2", "peak", "z"}
+    frame = frame[frame["role"] == "ls"]
     g = site["g_m_s2"]
     x = frame[frame["axis"] == "x"]
     tx = np.deg2rad(x["tau_deg"].to_numpy())

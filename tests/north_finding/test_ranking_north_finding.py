@@ -35,7 +35,10 @@ def pairs(spec: dict[tuple[int, str, str, str], tuple[float, float, float]]) -> 
 
 def real_rows(errors: dict[tuple[str, str], float], truth: float = 50.0) -> pd.DataFrame:
     """Noise-free real rows of estimates.csv with the given signed % errors."""
-    rows = [("real", m, q, truth, truth * (1 + e / 100.0), e) for (m, q), e in errors.items()]
+    rows = [
+        ("real", m, q, truth, truth * (1 + e / 100.0), e, float("nan"), "")
+        for (m, q), e in errors.items()
+    ]
     return pd.DataFrame(rows, columns=col.ESTIMATE_COLUMNS)
 
 

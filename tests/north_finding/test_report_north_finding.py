@@ -340,7 +340,7 @@ def make_inputs(root: Path, seed: int = 20230101, *, with_optional: bool = True)
                     error_pct=real_pct,
                 ),
             ]
-        )
+        ).assign(scan_bound_deg=np.nan, flag="")
         est[ESTIMATE_COLUMNS].to_csv(d / "estimates.csv", index=False)
         # Monte Carlo: trials are an array axis (no Python loop)
         k = len(pairs)

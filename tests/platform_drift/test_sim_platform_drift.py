@@ -318,7 +318,6 @@ def _bad(tmp_path: Path, edit) -> Path:
             "must lie in",
         ),
         (lambda r: r.__setitem__("output_step_s", 7.0), "duration_s", "whole number"),
-        (lambda r: r["start"].__setitem__("lat_deg", 0.0), "start.lat_deg", "non-zero"),
         (
             lambda r: r.__setitem__("decisions", [{"field": "nowhere.at_all", "text": "x"}]),
             "nowhere.at_all",
