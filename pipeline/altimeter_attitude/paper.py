@@ -187,4 +187,9 @@ PAPER = Paper(
     load_published="pipeline.altimeter_attitude.verdicts:load_published",
     discussion="pipeline.altimeter_attitude.discussion:discussion",
     math_stems=MATH_STEMS,
+    # the notebook's last table reads the paper scenario's summary when it exists: an input,
+    # so that the notebook runs after it (else its output depends on the job order)
+    notebook_inputs=lambda ctx: (
+        [f"{ctx.results}/paper/rms_summary.csv"] if "paper" in ctx.scenarios else []
+    ),
 )

@@ -103,8 +103,11 @@ def test_a_second_make_reproduce_in_the_same_checkout_is_refused(tmp_path):
     (repo / ".snakemake").mkdir()
     (repo / ".venv").mkdir()
     (repo / "environment.lock").write_text("", encoding="utf-8")
+    (repo / "pyproject.toml").write_text("", encoding="utf-8")
     time.sleep(0.01)
     (repo / ".venv" / ".stamp").write_text("", encoding="utf-8")
+    time.sleep(0.01)
+    (repo / ".venv" / ".project-stamp").write_text("", encoding="utf-8")
     holder = subprocess.Popen(
         ["flock", str(repo / ".snakemake" / "make-reproduce.lock"), "sleep", "60"],
         start_new_session=True,
