@@ -97,10 +97,10 @@ def html_text(path: Path) -> str:
     return " ".join(" ".join(parser.parts).split())
 
 
-def _ids() -> list[str]:
+def _ids(root: Path = ROOT) -> list[str]:
     ids: list[str] = []
     for slug in SLUGS:
-        path = ROOT / "results" / slug / "verdicts.csv"
+        path = root / "results" / slug / "verdicts.csv"
         if path.exists():
             ids += list(pd.read_csv(path, dtype=str, keep_default_na=False)["id"])
     if not ids:
@@ -140,11 +140,11 @@ def test_the_scan_finds_ids_and_json_outside_the_row_id_column(tmp_path):
 
 
 @pytest.mark.parametrize("name", ["reproduction", *SLUGS])
-def test_built_html_shows_no_ids_or_json_where_readers_look(name):
-    path = ROOT / "reports" / f"{name}.html"
+def test_built_html_shows_no_ids_or_json_where_readers_look(name, results_repo):
+    path = results_repo / "reports" / f"{name}.html"
     if not path.exists():
         pytest.skip(f"{path} not built")
-    offences = _offences(html_text(path), id_pattern(_ids()))
+    offences = _offences(html_text(path), id_pattern(_ids(results_repo)))
     assert not offences, f"{path}: {len(offences)} offence(s):\n" + "\n".join(offences[:20])
 
 
@@ -155,8 +155,8 @@ def _pdf_pages(path: Path) -> list[str]:
     return out.split("\f")
 
 
-def test_built_pdf_shows_no_ids_or_json_outside_appendix_b():
-    path = ROOT / "reports" / "reproduction.pdf"
+def test_built_pdf_shows_no_ids_or_json_outside_appendix_b(results_repo):
+    path = results_repo / "reports" / "reproduction.pdf"
     if not path.exists():
         pytest.skip(f"{path} not built")
     if shutil.which("pdftotext") is None:
@@ -164,7 +164,7 @@ def test_built_pdf_shows_no_ids_or_json_outside_appendix_b():
     pages = _pdf_pages(path)
     heading = re.compile(r"^\s*([A-Z]) (\S.*?)\s*$", re.M)
     appendix = ""
-    pattern = id_pattern(_ids())
+    pattern = id_pattern(_ids(results_repo))
     offences = []
     for k, page in enumerate(pages, 1):
         text = " ".join(page.split())
