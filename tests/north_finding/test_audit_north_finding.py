@@ -12,13 +12,13 @@ import pytest
 import sympy as sp
 
 from derivations.checks import Check, run_check
-from derivations.discrepancies import inconsistencies
 from derivations.north_finding import azimuth, leveling
 from derivations.north_finding import printed as P
 from derivations.north_finding import symbols as s
 from pipeline.columns import AUDIT_COLUMNS, AUDIT_STATUSES, DIFFERS_KINDS
 from pipeline.generated import north_finding as gen
 from pipeline.north_finding import estimators as est
+from tests.audit_harness import assert_kinds_follow_the_rule
 
 pytestmark = pytest.mark.slow  # the module fixture runs the whole audit (~30 s)
 
@@ -97,29 +97,9 @@ def test_expected_differs_and_their_kinds(audit):
     assert dict(zip(differs["equation"], differs["kind"], strict=True)) == EXPECTED_DIFFERS
 
 
-# the words a judgement opens with, by kind: the evidence for the kind comes first
-OPENERS = {
-    "paper_error": ("error of the paper: ",),
-    "text_artefact": ("artefact of the text: ",),
-    "unclear_from_text": ("cannot tell from the text: ",),
-    "convention": ("approximation of the paper: ", "notation of ", "sign convention "),
-}
-
-
 def test_each_kind_follows_from_what_the_seed_text_shows(audit, records):
-    """One rule for every paper: the kind of a difference is the one its discrepancy gives
-    (derivations.discrepancies), the same discrepancy never has two kinds, and the note opens
-    with the kind's evidence."""
-    differs = audit[audit["status"] == "differs"]
-    by_eq = {r["equation"]: r for r in records if r["status"] == "differs"}
-    assert set(by_eq) == set(differs["equation"])
-    rows = [
-        (e, by_eq[e]["discrepancy"], k)
-        for e, k in zip(differs["equation"], differs["kind"], strict=True)
-    ]
-    assert inconsistencies(rows) == []
-    for _, row in differs.iterrows():
-        assert row["note"].startswith(OPENERS[row["kind"]]), row["equation"]
+    """The kind of each difference follows the one rule of every paper (tests/audit_harness)."""
+    assert_kinds_follow_the_rule(audit, records)
 
 
 def test_the_derived_forms_that_the_pipeline_uses_match(audit):

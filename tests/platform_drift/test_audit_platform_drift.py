@@ -11,9 +11,9 @@ import re
 import pandas as pd
 import pytest
 
-from derivations.discrepancies import inconsistencies
 from derivations.platform_drift import audit
 from pipeline.columns import AUDIT_COLUMNS, AUDIT_STATUSES, DIFFERS_KINDS
+from tests.audit_harness import assert_kinds_follow_the_rule
 
 # the equations whose printed form differs from the derivation, with the kind of each
 # difference (the judgements in audit_*.py give the evidence)
@@ -90,29 +90,9 @@ def test_exact_set_of_differing_equations_and_their_kinds(frame):
     assert dict(zip(differs["equation"], differs["kind"], strict=True)) == DIFFERS
 
 
-# the words a judgement opens with, by kind: the evidence for the kind comes first
-OPENERS = {
-    "paper_error": ("error of the paper: ",),
-    "text_artefact": ("artefact of the text: ",),
-    "unclear_from_text": ("cannot tell from the text: ",),
-    "convention": ("approximation of the paper: ", "notation of ", "sign convention "),
-}
-
-
 def test_each_kind_follows_from_what_the_seed_text_shows(frame, records):
-    """One rule for every paper: the kind of a difference is the one its discrepancy gives
-    (derivations.discrepancies), the same discrepancy never has two kinds, and the note opens
-    with the kind's evidence."""
-    differs = frame[frame["status"] == "differs"]
-    by_eq = {r["equation"]: r for r in records if r["status"] == "differs"}
-    assert set(by_eq) == set(differs["equation"])
-    rows = [
-        (e, by_eq[e]["discrepancy"], k)
-        for e, k in zip(differs["equation"], differs["kind"], strict=True)
-    ]
-    assert inconsistencies(rows) == []
-    for _, row in differs.iterrows():
-        assert row["note"].startswith(OPENERS[row["kind"]]), row["equation"]
+    """The kind of each difference follows the one rule of every paper (tests/audit_harness)."""
+    assert_kinds_follow_the_rule(frame, records)
 
 
 def test_residuals_of_the_paper_errors(frame):
