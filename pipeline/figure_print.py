@@ -30,6 +30,7 @@ import xml.etree.ElementTree as ET
 __all__ = [
     "COLUMN_WIDTH_IN",
     "FONT_PT",
+    "FONT_RC",
     "MIN_TEXT_PT",
     "MM_PER_IN",
     "TEXT_WIDTH_IN",
@@ -57,6 +58,16 @@ FONT_PT = {
     "note": 7.5,
     "panel_title": 8.0,
     "title": 9.0,
+}
+#: the same sizes as Matplotlib rc settings, for ``matplotlib.rc_context``
+FONT_RC = {
+    "font.size": FONT_PT["label"],
+    "axes.titlesize": FONT_PT["panel_title"],
+    "axes.labelsize": FONT_PT["label"],
+    "xtick.labelsize": FONT_PT["tick"],
+    "ytick.labelsize": FONT_PT["tick"],
+    "legend.fontsize": FONT_PT["legend"],
+    "figure.titlesize": FONT_PT["title"],
 }
 SVG_NS = "{http://www.w3.org/2000/svg}"
 _SCALE = re.compile(r"scale\(([-\d.e]+)")

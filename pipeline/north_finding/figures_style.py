@@ -15,7 +15,7 @@ from typing import Any
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from pipeline.figure_print import COLUMN_WIDTH_IN, FONT_PT, TEXT_WIDTH_IN
+from pipeline.figure_print import COLUMN_WIDTH_IN, FONT_PT, FONT_RC, TEXT_WIDTH_IN
 
 __all__ = ["COLUMN", "DPI", "FULL", "RC", "new_figure", "tight", "title"]
 
@@ -25,13 +25,7 @@ FULL = TEXT_WIDTH_IN
 #: raster resolution of the PNG (the HTML pages): a column-wide figure is ~650 px wide
 DPI = 200
 RC = {
-    "font.size": FONT_PT["label"],
-    "axes.titlesize": FONT_PT["panel_title"],
-    "axes.labelsize": FONT_PT["label"],
-    "xtick.labelsize": FONT_PT["tick"],
-    "ytick.labelsize": FONT_PT["tick"],
-    "legend.fontsize": FONT_PT["legend"],
-    "figure.titlesize": FONT_PT["title"],
+    **FONT_RC,
     "lines.linewidth": 1.2,
     "axes.linewidth": 0.6,
     "xtick.major.width": 0.6,

@@ -14,7 +14,7 @@ from typing import Any
 
 from matplotlib.figure import Figure
 
-from pipeline.figure_print import FONT_PT, TEXT_WIDTH_IN
+from pipeline.figure_print import FONT_RC, TEXT_WIDTH_IN
 
 __all__ = ["DPI", "RC", "STYLE", "WIDTH_IN", "legend_below"]
 
@@ -22,13 +22,7 @@ __all__ = ["DPI", "RC", "STYLE", "WIDTH_IN", "legend_below"]
 DPI = 150
 WIDTH_IN = TEXT_WIDTH_IN
 RC = {
-    "font.size": FONT_PT["label"],
-    "axes.titlesize": FONT_PT["panel_title"],
-    "axes.labelsize": FONT_PT["label"],
-    "xtick.labelsize": FONT_PT["tick"],
-    "ytick.labelsize": FONT_PT["tick"],
-    "legend.fontsize": FONT_PT["legend"],
-    "figure.titlesize": FONT_PT["title"],
+    **FONT_RC,
     "axes.linewidth": 0.6,
     "xtick.major.width": 0.6,
     "ytick.major.width": 0.6,
