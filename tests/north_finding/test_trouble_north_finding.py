@@ -82,8 +82,8 @@ def test_page_lists_every_method_and_kind_with_trouble(tmp_path):
     path = tmp_path / "numerical_trouble.csv"
     pd.DataFrame(
         [
-            ("monte_carlo", "A3", "complex_roots", 1000, 7),
-            ("monte_carlo", "L1", "non_finite", 1000, 0),
+            ("monte_carlo", "", "A3", "complex_roots", 1000, 7),
+            ("monte_carlo", "", "L1", "non_finite", 1000, 0),
         ],
         columns=TROUBLE_COLUMNS,
     ).to_csv(path, index=False)
