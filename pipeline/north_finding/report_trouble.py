@@ -25,6 +25,7 @@ _RUNS = {
     "sensitivity": "sensitivity Monte Carlo",
     "ranking": "ranking Monte Carlo",
     "n_inference": "N inference Monte Carlo",
+    "a2_scan": "method A2 noise-free at every whole-degree table angle",
 }
 _AFTER = (
     "The estimators returned a value in every trial counted here, from a clipped argument (or "

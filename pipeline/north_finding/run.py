@@ -298,7 +298,7 @@ def _simulated(sc: Scenario, log) -> dict[str, pd.DataFrame]:
         "sensitivity": sensitivity,
         "ranking": ranking,
         "ranking_pairs": pairs,
-        "a2_scan": _a2_scan(sc, runner),
+        "a2_scan": _a2_scan(sc, runner, trouble_frames),  # before the trouble is gathered
         "numerical_trouble": pd.concat(trouble_frames, ignore_index=True),
     }
 
@@ -331,16 +331,20 @@ def _ranking(
 A2_SCAN_TAU_DEG = np.arange(0.0, 360.0, 1.0)
 
 
-def _a2_scan(sc: Scenario, runner: _Runner) -> pd.DataFrame:
-    """Noise-free real-sensor azimuth of method A2 at every tau of :data:`A2_SCAN_TAU_DEG`."""
+def _a2_scan(sc: Scenario, runner: _Runner, trouble_frames: list) -> pd.DataFrame:
+    """Noise-free real-sensor azimuth of method A2 at every tau of :data:`A2_SCAN_TAU_DEG`;
+    its numerical trouble (one 'trial' per tau: run ``a2_scan``) is appended to
+    ``trouble_frames``."""
     if "A2" not in sc.methods:
         return _empty("a2_scan")
     tau = A2_SCAN_TAU_DEG
     w = rd.noise_free_gyro(sc, sc.gyro.without("noise"), tau, "x")
     theta, phi = runner.truth_level
     prior = np.full(tau.size, runner.psi + sc.compass_offset)
-    with np.errstate(invalid="ignore"):
-        psi = est.a2_psi(w, np.deg2rad(tau), sc.omega_ie, sc.lat, theta, phi, prior)
+    t = Trouble()
+    with np.errstate(invalid="ignore"):  # NaN angles: counted as non_finite
+        psi = est.a2_psi(w, np.deg2rad(tau), sc.omega_ie, sc.lat, theta, phi, prior, t)
+    trouble_frames.append(t.frame({("A2", "psi_deg"): psi}, "a2_scan"))
     psi_deg = np.rad2deg(psi) % 360.0
     return pd.DataFrame(
         {
