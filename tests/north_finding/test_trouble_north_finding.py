@@ -189,3 +189,13 @@ def test_n_inference_trial_count_is_the_trials_used():
     items = [{"id": "T.x", "select": {"method": "L1"}, "quantity": "phi_deg", "value": "10.0"}]
     frames = infer_frames(run, lambda e: trials_frame(e, {"phi_deg": 10.0}), items, [10, 100], 0.05)
     assert frames["n_profile"]["n_trials"].tolist() == [200, 199]
+    # the verdict's mixture leaves the NaN trial out and says so
+    from pipeline.north_finding.judged_n import judged_at
+
+    at = judged_at(
+        {"n_rows": frames["n_rows"], "mc_trials_judged": frames["mc_trials_judged"]}, items[0]
+    )
+    assert at.weight_by_n.get(100, 0.0) > 0  # the N with the NaN trial carries weight
+    assert np.isfinite(at.samples).all()
+    said = [n for n in at.notes if "non-finite (numerical trouble)" in n]
+    assert said == ["1 of 400 trials non-finite (numerical trouble), left out of the mixture"]
