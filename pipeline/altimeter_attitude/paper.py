@@ -100,6 +100,7 @@ STEPS = (
         },
         outputs=lambda ctx: {
             **{n: f"{ctx.results}/{{scenario}}/{n}.csv" for n in RESULT_CSVS},
+            "numerical_trouble": f"{ctx.results}/{{scenario}}/numerical_trouble.csv",
             "provenance": f"{ctx.results}/{{scenario}}/provenance.json",
         },
         report={"rms_summary": ("Scenario summaries", "scenario_summary")},
@@ -110,7 +111,10 @@ STEPS = (
         inputs=lambda ctx: {
             **ctx.run_inputs(ctx.settings["sweep"]["base_scenario"], SCENARIO_SCHEMA),
         },
-        outputs=lambda ctx: {"sweep": f"{ctx.results}/sweep.csv"},
+        outputs=lambda ctx: {
+            "sweep": f"{ctx.results}/sweep.csv",
+            "trouble": f"{ctx.results}/sweep_trouble.csv",
+        },
         params=lambda ctx: {"sweep": dict(ctx.settings["sweep"])},
         report={"sweep": ("Sweep", "sweep")},
     ),
@@ -165,6 +169,8 @@ STEPS = (
             "summaries": ctx.per_scenario("rms_summary.csv"),
             "windows": ctx.per_scenario("window_summary.csv"),
             "noise_free": ctx.per_scenario("noise_free.csv"),
+            "trouble": ctx.per_scenario("numerical_trouble.csv"),
+            "sweep_trouble": f"{ctx.results}/sweep_trouble.csv",
             "provenance": ctx.per_scenario("provenance.json"),
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
             "scenario_schema": SCENARIO_SCHEMA,

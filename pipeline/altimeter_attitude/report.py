@@ -46,6 +46,7 @@ from pipeline.altimeter_attitude.report_summary import (
     headline_blocks,
     summary_blocks,
 )
+from pipeline.altimeter_attitude.report_trouble import filter_trouble_blocks
 from pipeline.altimeter_attitude.report_tuning import TUNING_ID, tuning_section
 from pipeline.altimeter_attitude.scenario import load_scenario
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
@@ -169,6 +170,7 @@ def _results(
     published: str,
     windows: Mapping[str, pd.DataFrame] | None = None,
     headline: Sequence[Block] = (),
+    results_dir: Path = Path("results/altimeter_attitude"),
 ) -> Section:
     blocks: list[Block] = [
         *headline,
@@ -192,6 +194,7 @@ def _results(
         inner: list[Block] = [Paragraph(descriptions[name])] if descriptions.get(name) else []
         inner.append(frame_table(s, formatters=fmts))
         inner += after_bank_blocks((windows or {}).get(name))
+        inner += filter_trouble_blocks(results_dir / name / "numerical_trouble.csv")
         if missing:
             inner.append(Paragraph(f"Filters without results: {', '.join(missing)}."))
         title = f"Scenario {name}" + (" (published scenario)" if name == published else "")
@@ -199,7 +202,7 @@ def _results(
     return Section("results", "Results per scenario", blocks, subs)
 
 
-def _figures(figures_dir: Path, sweep: pd.DataFrame | None) -> Section:
+def _figures(figures_dir: Path, sweep: pd.DataFrame | None, sweep_trouble: Path) -> Section:
     inner: list[Block] = list(figure_blocks(PAPER, figures_dir, [SWEEP_FIGURE]))
     if sweep is None or sweep.empty:
         inner.append(not_available("sweep.csv"))
@@ -215,6 +218,7 @@ def _figures(figures_dir: Path, sweep: pd.DataFrame | None) -> Section:
             )
         )
         inner.append(sweep_table(sweep))
+        inner += filter_trouble_blocks(sweep_trouble)
     return Section(
         "figures",
         "Figures",
@@ -361,8 +365,9 @@ def report(inputs: ReportInputs) -> PaperReport:
             published_scenario,
             windows,
             headline_blocks(verdicts, sums, published_scenario, windows),
+            results,
         ),
-        _figures(inputs.figures, sweep),
+        _figures(inputs.figures, sweep, results / "sweep_trouble.csv"),
         findings_section(sums, sweep, noise_free),
         # the grid behind the UKF's settings: a supporting appendix of the combined report
         tuning_section(_read(tuning_path, UKF_TUNING_COLUMNS), inputs.shown(tuning_path)),

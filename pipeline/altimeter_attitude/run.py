@@ -18,6 +18,9 @@ Writes, under ``results/altimeter_attitude/<scenario>/``:
   ``metrics.output_rate_hz``;
 * ``truth.csv`` (``TRUTH_COLUMNS``): the nominal trajectory (Figs 2, 4, 6) and the sensor
   outputs of run 0 (Figs 3, 5);
+* ``numerical_trouble.csv`` (:data:`pipeline.trouble.TROUBLE_COLUMNS`): per run kind
+  (``monte_carlo``, ``noise_free``) and filter, the runs with a non-finite estimate, a diverged
+  error or a non-positive sigma (:mod:`pipeline.altimeter_attitude.trouble`);
 * ``provenance.json``: code version, config hash, seeds, package versions, filter settings.
 
 Filters (all fed the same noise, vectorised over runs): ``linear_kf`` (eqs. 26-33),
@@ -55,7 +58,9 @@ from pipeline.altimeter_attitude.estimates import Estimates
 from pipeline.altimeter_attitude.scenario import ROOT, Scenario, load_scenario
 from pipeline.altimeter_attitude.sensors import Inputs, concat_inputs, simulate_inputs
 from pipeline.altimeter_attitude.trajectory import load_factor
+from pipeline.altimeter_attitude.trouble import estimates_trouble, trouble_frame
 from pipeline.atomic import write_csv, write_json
+from pipeline.trouble import TROUBLE_COLUMNS
 
 __all__ = ["run_filters", "simulate", "truth_frame", "run_scenario", "main"]
 
@@ -220,6 +225,18 @@ def run_scenario(
         ),
         "timeseries": write_csv(out_dir / "timeseries.csv", series, TIMESERIES_COLUMNS),
         "truth": write_csv(out_dir / "truth.csv", truth_frame(inputs), TRUTH_COLUMNS),
+        "numerical_trouble": write_csv(
+            out_dir / "numerical_trouble.csv",
+            trouble_frame(
+                [
+                    row
+                    for run, ests in (("monte_carlo", estimates), ("noise_free", noise_free))
+                    for e in ests.values()
+                    for row in estimates_trouble(e, inputs.truth, run)
+                ]
+            ),
+            TROUBLE_COLUMNS,
+        ),
     }
     prov = provenance(
         scenario=sc.name,

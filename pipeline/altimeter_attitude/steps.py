@@ -24,17 +24,22 @@ def sweep(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> 
     from pipeline.altimeter_attitude.columns import SWEEP_COLUMNS
     from pipeline.altimeter_attitude.scenario import load_scenario
     from pipeline.altimeter_attitude.sweep import run_sweep
+    from pipeline.altimeter_attitude.trouble import trouble_frame
     from pipeline.atomic import write_csv
+    from pipeline.trouble import TROUBLE_COLUMNS
 
     settings = params["sweep"]
+    trouble: list[tuple] = []
     frame = run_sweep(
         load_scenario(inputs["scenario"]),
         dict(settings["values"]),
         int(settings["n_runs"]),
         tuple(settings["filters"]),
         log=log,
+        trouble=trouble,
     )
     write_csv(outputs["sweep"], frame, SWEEP_COLUMNS)
+    write_csv(outputs["trouble"], trouble_frame(trouble), TROUBLE_COLUMNS)
 
 
 def verdicts(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:

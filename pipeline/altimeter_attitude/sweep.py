@@ -7,7 +7,8 @@ accelerations), and the initial roll/pitch error. Points that share the sample r
 stacked along the run axis and filtered in one vectorised pass; errors are then computed per
 point against that point's own truth, over the flight after the transient and over the
 point's own after-bank window (:mod:`pipeline.altimeter_attitude.windows`; NaN where it has
-none). Writes ``sweep.csv`` (``SWEEP_COLUMNS``).
+none). Writes ``sweep.csv`` (``SWEEP_COLUMNS``); the workflow step also writes the numerical
+trouble of every point and filter to ``sweep_trouble.csv``.
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ from pipeline.altimeter_attitude.columns import SWEEP_COLUMNS, WINDOWS
 from pipeline.altimeter_attitude.estimates import Estimates
 from pipeline.altimeter_attitude.scenario import Scenario, build_scenario, load_scenario
 from pipeline.altimeter_attitude.sensors import concat_inputs, simulate_inputs
+from pipeline.altimeter_attitude.trouble import estimates_trouble
 from pipeline.atomic import write_csv
 from pipeline.config import ConfigError
 
@@ -63,10 +65,17 @@ def _slice(est: Estimates, sl: slice) -> Estimates:
 
 
 def run_sweep(
-    base: Scenario, values: dict[str, list[float]], n_runs: int, filters: tuple[str, ...], log=print
+    base: Scenario,
+    values: dict[str, list[float]],
+    n_runs: int,
+    filters: tuple[str, ...],
+    log=print,
+    trouble: list[tuple] | None = None,
 ) -> pd.DataFrame:
     """Every (parameter, value) point; base-valued points are computed once and reported
-    under each parameter."""
+    under each parameter. Given ``trouble`` (a list), appends the numerical trouble of every
+    point and filter (:func:`pipeline.altimeter_attitude.trouble.estimates_trouble`, run
+    ``sweep``, case ``<parameter>=<value>``)."""
     points: list[tuple[str, float, Scenario]] = []
     for parameter, vals in values.items():
         for v in vals:
@@ -100,6 +109,10 @@ def run_sweep(
                 else:
                     srow = {"roll_rms_deg": math.nan, "pitch_rms_deg": math.nan}
                 for parameter, v in labels:
+                    if trouble is not None:
+                        trouble += estimates_trouble(
+                            mine, part.truth, "sweep", f"{parameter}={v:g}"
+                        )
                     rows.append(
                         {
                             "parameter": parameter,

@@ -67,7 +67,8 @@ A2_SCAN_COLUMNS = ["tau_deg", "psi_deg", "error_deg"]
 # results/<slug>/<scenario>/n_profile.csv: per grid N, the profile log-likelihood of the used
 # statistical rows (robust, and with the plain Gaussian, eps = 0, for comparison), how many
 # rows are used and how many lie inside the rank band there, the largest Kolmogorov-Smirnov
-# distance of a Gaussian fit, the Monte Carlo trials per N, and whether N is the
+# distance of a Gaussian fit, the Monte Carlo trials used per N (the fewest finite trials of
+# any row: NaN trials are dropped, and counted in n_trouble.csv), and whether N is the
 # maximum-likelihood N of all used rows.
 N_PROFILE_COLUMNS = [
     "n_avg",

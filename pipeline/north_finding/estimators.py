@@ -246,7 +246,9 @@ def azimuth(
         out["A4", "gyro_scale"] = gen.a4_scale(om1, psi, lat, theta)
     if "A5" in methods:
         A, B, C = gen.a5_coeffs(om1, om2, lat, theta, phi)
-        roots = np.stack(gen.a5_scale_roots(A, B, C, lat), axis=1)
+        with np.errstate(invalid="ignore"):  # negative discriminant: counted just below
+            roots = np.stack(gen.a5_scale_roots(A, B, C, lat), axis=1)
+        mark(trouble, "A5", "complex_roots", ~np.isfinite(roots).any(axis=1))
         # the sign and size of S are known from calibration: keep the root nearest 1
         k = np.nanargmin(np.abs(np.where(np.isfinite(roots), roots, np.inf) - 1.0), axis=1)
         scale = np.take_along_axis(roots, k[:, None], axis=1)[:, 0]

@@ -86,7 +86,7 @@ def judged_at(results: Mapping[str, Any], item: Mapping[str, Any]) -> JudgedAt |
     weight_by_n = {
         int(n): float(w) for n, w in zip(rows["n_avg"], rows["weight"], strict=True) if w > 0
     }
-    samples, weights = [], []
+    samples, weights, dropped, total_trials = [], [], 0, 0
     for n, w in weight_by_n.items():
         pick = mc[(mc["n_avg"] == n) & (mc["method"] == method) & (mc["quantity"] == quantity)]
         if pick.empty:
@@ -95,6 +95,8 @@ def judged_at(results: Mapping[str, Any], item: Mapping[str, Any]) -> JudgedAt |
                 f"{quantity} (row {item['id']}); allowed: the N inference's own output"
             )
         s = pick.sort_values("trial")["estimate"].to_numpy(dtype=float)
+        total_trials += s.size
+        dropped += int((~np.isfinite(s)).sum())
         s = s[np.isfinite(s)]
         samples.append(s)
         weights.append(np.full(s.size, w / s.size))
@@ -120,6 +122,11 @@ def judged_at(results: Mapping[str, Any], item: Mapping[str, Any]) -> JudgedAt |
     ]
     if not used:
         notes.append("excluded from the N inference: outside the rank band at every grid N")
+    if dropped:  # counted as numerical trouble of the N inference too
+        notes.append(
+            f"{dropped} of {total_trials} trials non-finite (numerical trouble), left out of "
+            "the mixture"
+        )
     return JudgedAt(
         np.concatenate(samples),
         np.concatenate(weights),

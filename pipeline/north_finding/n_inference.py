@@ -247,12 +247,16 @@ def infer_frames(
     lo_band, hi_band = RANK_BAND
     shape = (len(items), len(grid))
     log_p, ranks, stats = np.full(shape, -math.inf), np.full(shape, np.nan), {}
+    # per grid N the fewest finite trials any row is judged on (NaN trials are dropped and
+    # counted as numerical trouble): n_profile's n_trials is the count actually used
+    n_used = [min(np.size(v) for v in estimates[n].values()) for n in grid]
     for i, item in enumerate(items):
         key = (item["select"]["method"], item["quantity"])
         lo, hi = printed_interval(item["value"])
         for k, n in enumerate(grid):
             sample = np.asarray(estimates[n][key], dtype=float)
             sample = sample[np.isfinite(sample)]
+            n_used[k] = min(n_used[k], sample.size)
             mean, std = float(np.mean(sample)), float(np.std(sample, ddof=1))
             ks = float(kstest((sample - mean) / std, "norm").statistic) if std > 0 else 1.0
             log_p[i, k] = interval_log_prob(mean, std, lo, hi)
@@ -291,7 +295,7 @@ def infer_frames(
             "n_rows_used": int(used.sum()),
             "n_rows_in_band": in_band.sum(axis=0),
             "max_ks": [max(stats[i, k][2] for i in range(len(items))) for k in range(len(grid))],
-            "n_trials": int(min(np.size(v) for v in estimates[grid[0]].values())),
+            "n_trials": n_used,
             "inferred": [k == best for k in range(len(grid))],
         }
     )

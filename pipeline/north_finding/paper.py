@@ -75,7 +75,13 @@ SCENARIO_FILES = (
 )
 #: what the N inference writes into the published scenario's folder
 #: (:mod:`pipeline.north_finding.run_inference`)
-INFERENCE_FILES = ("n_profile.csv", "n_rows.csv", "n_robustness.csv", "mc_trials_judged.csv")
+INFERENCE_FILES = (
+    "n_profile.csv",
+    "n_rows.csv",
+    "n_robustness.csv",
+    "mc_trials_judged.csv",
+    "n_trouble.csv",
+)
 #: what the verdicts read from the published scenario's folder
 VERDICT_INPUTS = (
     "n_rows.csv",
@@ -161,7 +167,7 @@ STEPS = (
     page_step(
         lambda ctx: {
             "scenarios": [f for name in SCENARIO_FILES for f in ctx.per_scenario(name)],
-            "n_inference": [_published(ctx, f) for f in INFERENCE_FILES[:3]],
+            "n_inference": [_published(ctx, f) for f in (*INFERENCE_FILES[:3], "n_trouble.csv")],
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
             "scenario_schema": SCENARIO_SCHEMA,
             "figures": _figures(ctx)["png"],

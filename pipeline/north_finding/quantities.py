@@ -253,13 +253,23 @@ def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
         ]
     real = _estimate(estimates, "real", method, quantity)
     sample = mc["estimate"].to_numpy(dtype=float)
+    finite = np.isfinite(sample)
+    left_out = (
+        (
+            f"{int((~finite).sum())} of {sample.size} trials non-finite (numerical trouble), left out",
+        )
+        if not finite.all()
+        else ()
+    )
+    sample = sample[finite]  # a rank over NaN trials would count them as neither below nor above
     truth = float(mc["truth"].iloc[0])
     at = judged_at(results, item)
     weights = None
     if at is not None:
         sample, weights, cause = at.samples, at.weights, cause or mixed_n(results, item)
+        left_out = ()  # the mixture says its own
     power = (_power(sample, truth, float(item["value"]), weights),) if truth else ()
-    power = (*(at.notes if at is not None else ()), *power)
+    power = (*(at.notes if at is not None else ()), *left_out, *power)
     return [
         Found(
             method=method,

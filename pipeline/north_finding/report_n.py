@@ -21,6 +21,7 @@ from pipeline.north_finding.columns import (
 )
 from pipeline.north_finding.n_inference import fmt_grid, posterior_range
 from pipeline.north_finding.report_results import read_csv
+from pipeline.north_finding.report_trouble import trouble_blocks
 from pipeline.report.model import Block, Paragraph, Section, frame_table, not_available
 
 __all__ = ["KS_5PCT", "n_inference_section"]
@@ -166,5 +167,10 @@ def n_inference_section(
     )
     # where each row is consistent on the grid is in its verdict row's notes (the page budget
     # of the PDF's main part leaves no room for a second per-row table)
-    blocks = [Paragraph(text), _profile_table(prof), *_robustness(d, label)]
+    blocks = [
+        Paragraph(text),
+        _profile_table(prof),
+        *_robustness(d, label),
+        *trouble_blocks(d / "n_trouble.csv"),
+    ]
     return Section("n-inference", title, blocks)

@@ -1,63 +1,40 @@
 """The numerical trouble of one scenario's estimators, as the report shows it: one sentence
-when there was none, else the counts of every method and kind that met some
-(``numerical_trouble.csv``, :mod:`pipeline.north_finding.trouble`)."""
+when there was none, else a note and the counts of every run, method and kind that met some
+(``numerical_trouble.csv`` and the N inference's ``n_trouble.csv``,
+:mod:`pipeline.north_finding.trouble`; the shared layout is :mod:`pipeline.report.trouble`)."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
-import pandas as pd
-
-from pipeline.north_finding.trouble import TROUBLE_COLUMNS
-from pipeline.report.model import Block, Paragraph, frame_table, not_available
+from pipeline.report.model import Block
+from pipeline.report.trouble import trouble_blocks as shared_blocks
 
 __all__ = ["trouble_blocks"]
 
 _WORDS = {
     "clipped_arcsine": "arcsine or arccosine argument clipped to [-1, 1]",
     "unreachable_root": "sinusoid equation beyond reach, right side clipped",
-    "complex_roots": "quartic of eq. 50 without a real root, real parts used",
+    "complex_roots": "no real root (quartic of eq. 50: real parts used; eq. 65: no estimate)",
     "non_finite": "estimate NaN or infinite",
 }
 _RUNS = {
     "noise_free_real": "noise-free real run",
     "monte_carlo": "Monte Carlo",
     "readings": "the readings",
+    "sensitivity": "sensitivity Monte Carlo",
+    "ranking": "ranking Monte Carlo",
+    "n_inference": "N inference Monte Carlo",
+    "a2_scan": "method A2 noise-free at every whole-degree table angle",
 }
+_AFTER = (
+    "The estimators returned a value in every trial counted here, from a clipped argument (or "
+    "a non-finite one); the summaries include the clipped trials and leave out the non-finite "
+    "ones, and their trial counts say how many they used."
+)
 
 
 def trouble_blocks(path: Path) -> list[Block]:
-    """Blocks for ``path`` (a numerical_trouble.csv); ``not available`` if it is absent."""
-    if not path.is_file():
-        return [not_available(path.name)]
-    df = pd.read_csv(path)
-    missing = [c for c in TROUBLE_COLUMNS if c not in df.columns]
-    if missing:
-        raise ValueError(f"{path}: missing columns {missing} (has {list(df.columns)})")
-    runs = ", ".join(
-        f"{_RUNS.get(r, r)} ({int(g['n_trials'].max())} trials)"
-        for r, g in df.groupby("run", sort=False)
-    )
-    hit = df[df["n_affected"] > 0]
-    if hit.empty:
-        return [
-            Paragraph(f"No numerical trouble in {runs}: no " + "; no ".join(_WORDS.values()) + ".")
-        ]
-    table = pd.DataFrame(
-        {
-            "run": hit["run"].map(lambda r: _RUNS.get(r, r)),
-            "method": hit["method"],
-            "trouble": hit["kind"].map(lambda k: _WORDS.get(k, k)),
-            "trials affected": [
-                f"{a} of {n}" for a, n in zip(hit["n_affected"], hit["n_trials"], strict=True)
-            ],
-        }
-    )
-    return [
-        Paragraph(
-            f"Numerical trouble in {runs}: the estimators returned a value in every trial below, "
-            "but from a clipped argument (or a non-finite one); the Monte Carlo summaries "
-            "include these trials."
-        ),
-        frame_table(table.reset_index(drop=True)),
-    ]
+    """Blocks for ``path`` (a numerical_trouble.csv or n_trouble.csv); ``not available`` if
+    it is absent."""
+    return shared_blocks(path, _WORDS, _RUNS, after=_AFTER)

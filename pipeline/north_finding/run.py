@@ -12,9 +12,9 @@ Writes, under ``results/north_finding/<scenario>/`` (columns in pipeline/columns
   ``ranking`` block, for the claims that rank methods (:mod:`pipeline.north_finding.ranking`);
 * ``a2_scan.csv``: the noise-free real-sensor azimuth of method A2 at every whole-degree
   table angle (the paper does not give its tau);
-* ``numerical_trouble.csv``: per run (noise-free real, Monte Carlo, or the readings), method
-  and kind, the trials in which an estimator clipped an argument or gave a non-finite value
-  (:mod:`pipeline.north_finding.trouble`);
+* ``numerical_trouble.csv``: per run (noise-free real, Monte Carlo, sensitivity and ranking
+  at each N, or the readings), method and kind, the trials in which an estimator clipped an
+  argument or gave a non-finite value (:mod:`pipeline.north_finding.trouble`);
 * ``provenance.json``: code version, config hash, packages, seeds.
 
 The N at which the statistical verdicts are judged is not this scenario's ``n_samples``: the
@@ -48,7 +48,7 @@ from pipeline.north_finding import readings as rd
 from pipeline.north_finding import scan_bound as sb
 from pipeline.north_finding.ranking import ranking_frames
 from pipeline.north_finding.scenario import ROOT, Scenario, load_scenario
-from pipeline.north_finding.trouble import TROUBLE_COLUMNS, Trouble
+from pipeline.north_finding.trouble import TROUBLE_COLUMNS, Trouble, n_case
 
 __all__ = ["run_scenario", "truth_values", "estimates_frame", "main"]
 
@@ -153,7 +153,8 @@ def trials_frame(estimates: est.Estimates, truth: dict[str, float]) -> pd.DataFr
 
 
 def summary_frame(trials: pd.DataFrame) -> pd.DataFrame:
-    """Mean, std and 5/50/95 % quantiles of every estimate over the trials."""
+    """Mean, std and 5/50/95 % quantiles of every estimate over its finite trials; ``n_trials``
+    is how many those are (NaN trials are skipped, counted in numerical_trouble.csv)."""
     grouped = trials.groupby(["method", "quantity"], sort=False)["estimate"]
     out = pd.DataFrame(
         {
@@ -163,7 +164,7 @@ def summary_frame(trials: pd.DataFrame) -> pd.DataFrame:
             "p05": grouped.quantile(0.05),
             "p50": grouped.quantile(0.50),
             "p95": grouped.quantile(0.95),
-            "n_trials": grouped.size(),
+            "n_trials": grouped.count(),  # the trials used: NaN ones are skipped
         }
     ).reset_index()
     return out[col.MC_SUMMARY_COLUMNS]
@@ -262,11 +263,14 @@ def _simulated(sc: Scenario, log) -> dict[str, pd.DataFrame]:
     budget["error_pct"] = 100.0 * budget["error"] / budget["quantity"].map(truth).abs()
 
     sens_rows = []
+    trouble_frames = [trouble0.frame(real0, "noise_free_real"), trouble_mc.frame(mc, "monte_carlo")]
     if sc.sensitivity:
         n_sens = sc.sensitivity["n_trials"]
         z = rd.standard_normals(sc.seed, key, n_sens, n_pos)
         for i, n_avg in enumerate(sc.sensitivity["n_avg"]):
-            out = runner.run((), z, int(n_avg))
+            t_sens = Trouble()
+            out = runner.run((), z, int(n_avg), trouble=t_sens)
+            trouble_frames.append(t_sens.frame(out, "sensitivity", n_case(n_avg)))
             for (m, q), v in out.items():
                 err = _error_pct(v, truth[q], q)
                 diff = _difference(v, truth[q], q)
@@ -283,7 +287,7 @@ def _simulated(sc: Scenario, log) -> dict[str, pd.DataFrame]:
                 )
             log(f"{sc.name}: sensitivity {i + 1}/{len(sc.sensitivity['n_avg'])} (N = {n_avg})")
     sensitivity = pd.DataFrame(sens_rows, columns=col.SENSITIVITY_COLUMNS)
-    ranking, pairs = _ranking(sc, runner, truth, normals, key, n_pos)
+    ranking, pairs = _ranking(sc, runner, truth, normals, key, n_pos, trouble_frames)
     if sc.ranking:
         log(f"{sc.name}: ranking Monte Carlo at N = {sc.ranking['n_avg']}")
     return {
@@ -294,23 +298,30 @@ def _simulated(sc: Scenario, log) -> dict[str, pd.DataFrame]:
         "sensitivity": sensitivity,
         "ranking": ranking,
         "ranking_pairs": pairs,
-        "a2_scan": _a2_scan(sc, runner),
-        "numerical_trouble": pd.concat(
-            [trouble0.frame(real0, "noise_free_real"), trouble_mc.frame(mc, "monte_carlo")],
-            ignore_index=True,
-        ),
+        "a2_scan": _a2_scan(sc, runner, trouble_frames),  # before the trouble is gathered
+        "numerical_trouble": pd.concat(trouble_frames, ignore_index=True),
     }
 
 
-def _ranking(sc: Scenario, runner: _Runner, truth, normals, key: int, n_pos: int):
+def _ranking(
+    sc: Scenario, runner: _Runner, truth, normals, key: int, n_pos: int, trouble_frames: list
+):
     """ranking.csv and ranking_pairs.csv: the Monte Carlo at every N of ``sc.ranking``, on the
-    main Monte Carlo's normals when the trial counts agree (so its N reproduces mc_trials)."""
+    main Monte Carlo's normals when the trial counts agree (so its N reproduces mc_trials);
+    the numerical trouble of each N is appended to ``trouble_frames``."""
     if not sc.ranking:
         return _empty("ranking"), _empty("ranking_pairs")
     n_trials = int(sc.ranking["n_trials"])
     z = normals if n_trials == sc.n_trials else rd.standard_normals(sc.seed, key, n_trials, n_pos)
+
+    def run(n: int) -> est.Estimates:
+        t = Trouble()
+        out = runner.run((), z, n, trouble=t)
+        trouble_frames.append(t.frame(out, "ranking", n_case(n)))
+        return out
+
     return ranking_frames(
-        lambda n: runner.run((), z, n),
+        run,
         lambda v, q: _error_pct(v, truth[q], q),
         sc.ranking["n_avg"],
     )
@@ -320,16 +331,20 @@ def _ranking(sc: Scenario, runner: _Runner, truth, normals, key: int, n_pos: int
 A2_SCAN_TAU_DEG = np.arange(0.0, 360.0, 1.0)
 
 
-def _a2_scan(sc: Scenario, runner: _Runner) -> pd.DataFrame:
-    """Noise-free real-sensor azimuth of method A2 at every tau of :data:`A2_SCAN_TAU_DEG`."""
+def _a2_scan(sc: Scenario, runner: _Runner, trouble_frames: list) -> pd.DataFrame:
+    """Noise-free real-sensor azimuth of method A2 at every tau of :data:`A2_SCAN_TAU_DEG`;
+    its numerical trouble (one 'trial' per tau: run ``a2_scan``) is appended to
+    ``trouble_frames``."""
     if "A2" not in sc.methods:
         return _empty("a2_scan")
     tau = A2_SCAN_TAU_DEG
     w = rd.noise_free_gyro(sc, sc.gyro.without("noise"), tau, "x")
     theta, phi = runner.truth_level
     prior = np.full(tau.size, runner.psi + sc.compass_offset)
-    with np.errstate(invalid="ignore"):
-        psi = est.a2_psi(w, np.deg2rad(tau), sc.omega_ie, sc.lat, theta, phi, prior)
+    t = Trouble()
+    with np.errstate(invalid="ignore"):  # NaN angles: counted as non_finite
+        psi = est.a2_psi(w, np.deg2rad(tau), sc.omega_ie, sc.lat, theta, phi, prior, t)
+    trouble_frames.append(t.frame({("A2", "psi_deg"): psi}, "a2_scan"))
     psi_deg = np.rad2deg(psi) % 360.0
     return pd.DataFrame(
         {

@@ -4,8 +4,10 @@ The Monte Carlo runs at every N of the scenario's ``n_inference.n_avg`` on the m
 Carlo's standard normals (trial k seeded by ``SeedSequence([seed, scenario_key, k])``, as in
 :mod:`pipeline.north_finding.run`), so the grid point equal to ``averaging.n_samples``
 reproduces ``mc_trials.csv`` trial for trial. Writes ``n_profile.csv``, ``n_rows.csv`` and
-``mc_trials_judged.csv`` into the scenario's results folder, and ``n_robustness.csv``: the
-inference rerun at every ``contamination_check`` and on the grid's powers of ten alone.
+``mc_trials_judged.csv`` into the scenario's results folder, ``n_robustness.csv``: the
+inference rerun at every ``contamination_check`` and on the grid's powers of ten alone, and
+``n_trouble.csv``: the numerical trouble of the estimators at every grid N (run
+``n_inference``, case ``N=<n>``; :mod:`pipeline.north_finding.trouble`).
 
 Usage: ``python -m pipeline.north_finding.run_inference --scenario
 config/scenarios/north_finding/paper.yaml --published config/published/north_finding.yaml
@@ -35,6 +37,7 @@ from pipeline.north_finding.judged_n import mixture_rank_of
 from pipeline.north_finding.n_inference import fmt_grid, infer_frames
 from pipeline.north_finding.run import _Runner, scenario_key, trials_frame, truth_values
 from pipeline.north_finding.scenario import Scenario, load_scenario
+from pipeline.north_finding.trouble import TROUBLE_COLUMNS, Trouble, n_case
 from pipeline.verdicts.kinds import RANK_BAND
 
 __all__ = ["OUTPUTS", "infer_scenario", "main"]
@@ -45,13 +48,14 @@ OUTPUTS = {
     "n_rows": ("n_rows.csv", N_ROW_COLUMNS),
     "mc_trials_judged": ("mc_trials_judged.csv", MC_JUDGED_COLUMNS),
     "n_robustness": ("n_robustness.csv", N_ROBUSTNESS_COLUMNS),
+    "n_trouble": ("n_trouble.csv", TROUBLE_COLUMNS),
 }
 
 
 def infer_scenario(
     scenario: Scenario | str | Path, published: str | Path, out_dir: str | Path, log=print
 ) -> dict[str, Path]:
-    """Infer N for the scenario's statistical rows of ``published``; write the three files."""
+    """Infer N for the scenario's statistical rows of ``published``; write :data:`OUTPUTS`."""
     from pipeline.north_finding.verdicts import load_published
 
     sc = scenario if isinstance(scenario, Scenario) else load_scenario(scenario)
@@ -64,7 +68,14 @@ def infer_scenario(
     runner, truth = _Runner(sc), truth_values(sc)
     n_pos = rd.simulation_positions(sc)[0].size
     z = rd.standard_normals(sc.seed, scenario_key(sc.name), sc.n_trials, n_pos)
-    run = cache(lambda n: runner.run((), z, n))  # every grid N once, for every rerun
+    troubles: dict[int, pd.DataFrame] = {}
+
+    @cache  # every grid N once, for every rerun
+    def run(n: int):
+        t = Trouble()
+        out = runner.run((), z, n, trouble=t)
+        troubles[n] = t.frame(out, "n_inference", n_case(n))
+        return out
 
     def infer(grid: list[int], eps: float) -> dict:
         return infer_frames(run, lambda e: trials_frame(e, truth), items, grid, eps)
@@ -82,6 +93,7 @@ def infer_scenario(
     frames["n_robustness"] = pd.DataFrame(
         [(name, e, *_failing(f)) for name, e, f in robust], columns=N_ROBUSTNESS_COLUMNS
     )
+    frames["n_trouble"] = pd.concat([troubles[n] for n in sorted(troubles)], ignore_index=True)
     best = frames["n_profile"].loc[frames["n_profile"]["inferred"], "n_avg"]
     weighted = sorted(set(frames["mc_trials_judged"]["n_avg"]))
     log(

@@ -67,6 +67,7 @@ STEPS = (
         outputs=lambda ctx: {
             **{n: f"{ctx.results}/{{scenario}}/{n}.csv" for n in SCENARIO_CSVS},
             "summary": f"{ctx.results}/{{scenario}}/summary.csv",
+            "numerical_trouble": f"{ctx.results}/{{scenario}}/numerical_trouble.csv",
             "provenance": f"{ctx.results}/{{scenario}}/provenance.json",
         },
         report={"summary": ("Scenario summaries", "scenario_summary")},
@@ -108,6 +109,7 @@ STEPS = (
         },
         outputs=lambda ctx: {
             "csv": f"{ctx.results}/latitude_sweep.csv",
+            "trouble": f"{ctx.results}/latitude_sweep_trouble.csv",
             "png": ctx.figure("fig9_latitude.png"),
             "svg": ctx.figure("fig9_latitude.svg"),
         },
@@ -115,6 +117,8 @@ STEPS = (
     page_step(
         lambda ctx: {
             "summaries": ctx.per_scenario("summary.csv"),
+            "trouble": ctx.per_scenario("numerical_trouble.csv"),
+            "sweep_trouble": f"{ctx.results}/latitude_sweep_trouble.csv",
             "provenance": ctx.per_scenario("provenance.json"),
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
             "scenario_schema": SCENARIO_SCHEMA,

@@ -2,7 +2,8 @@
 verdicts, Figs. 5-8, per-scenario summaries, assumptions, provenance.
 
 Reads ``results/platform_drift/``: ``equation_audit.csv`` and ``verdicts.csv`` (required),
-``<scenario>/summary.csv`` and ``<scenario>/provenance.json``, ``figures/*.png``; and the
+``<scenario>/summary.csv``, ``<scenario>/numerical_trouble.csv``, ``latitude_sweep_trouble.csv``
+and ``<scenario>/provenance.json``, ``figures/*.png``; and the
 scenario files ``config/scenarios/platform_drift/*.yaml``.
 """
 
@@ -33,6 +34,7 @@ from pipeline.report.model import (
     not_available,
 )
 from pipeline.report.plain import plain_value
+from pipeline.report.trouble import trouble_blocks
 
 __all__ = ["report"]
 
@@ -137,6 +139,29 @@ def _provenance(results: Path) -> list[Section]:
     return out
 
 
+_TROUBLE_WORDS = {
+    "eq36_undefined": "eq. 36 undefined (start latitude 0), the analytic curve left empty",
+    "clipped_arcsine": "haversine argument clipped to [0, 1]",
+    "non_finite": "position error NaN or infinite",
+}
+_TROUBLE_RUNS = {
+    "main": "the curves to the scenario's duration",
+    "long": "the long curves",
+    "sweep": "the latitude sweep",
+}
+
+
+def _trouble(path: Path) -> list[Block]:
+    """The numerical trouble of the error curves in ``path`` (numerical_trouble.csv)."""
+    return trouble_blocks(
+        path,
+        _TROUBLE_WORDS,
+        _TROUBLE_RUNS,
+        unit="points",
+        after="A curve with non-finite points has an empty 2 h and largest error.",
+    )
+
+
 def report(inputs: ReportInputs) -> PaperReport:
     """The paper's report sections, built from ``inputs`` (see the module docstring)."""
     results = inputs.results
@@ -168,12 +193,22 @@ def report(inputs: ReportInputs) -> PaperReport:
             "Per-scenario summaries (2 h errors, crossovers)",
             [],
             [
+                *(
+                    Section(
+                        f"summaries-{slugify(d.name)}",
+                        f"Scenario {d.name}",
+                        [
+                            frame_table(pd.read_csv(d / "summary.csv"), sig=5),
+                            *_trouble(d / "numerical_trouble.csv"),
+                        ],
+                    )
+                    for d in _scenario_dirs(results, "summary.csv")
+                ),
                 Section(
-                    f"summaries-{slugify(d.name)}",
-                    f"Scenario {d.name}",
-                    [frame_table(pd.read_csv(d / "summary.csv"), sig=5)],
-                )
-                for d in _scenario_dirs(results, "summary.csv")
+                    "summaries-latitude-sweep",
+                    "Latitude sweep",
+                    _trouble(results / "latitude_sweep_trouble.csv"),
+                ),
             ],
         ),
         Section("assumptions", "Assumptions", [], _assumptions(inputs.scenarios)),

@@ -23,6 +23,12 @@ Writes, under ``results/platform_drift/<scenario>/``:
   coinciding curves do not "cross" on numerical noise); for the rows of
   ``proposed_analytic`` and ``proposed_true_azimuth`` the same with that scheme in place of
   proposed_simulated; NaN if it never does;
+* ``numerical_trouble.csv`` (:data:`pipeline.trouble.TROUBLE_COLUMNS`): per run (``main``,
+  ``long``), drift case and scheme, how many of the curve's points met each kind of
+  :data:`TROUBLE_KINDS`: ``eq36_undefined`` (the analytic channel-3 curve at a start latitude
+  of 0, where eq. 36 divides by zero: NaN), ``clipped_arcsine`` (the haversine's argument
+  clipped to [0, 1]) and ``non_finite`` (a NaN or infinite error). An integrator failure is
+  no count: the step stops with the integrator's message and writes nothing;
 * ``provenance.json``: code version, config and generated-module hashes, packages,
   integrator, function-evaluation counts, derived constants and no-drift error floors.
   No wall times (the files are reproducible bit for bit; there are no random numbers).
@@ -53,7 +59,8 @@ from pipeline.platform_drift import platform as pf
 from pipeline.platform_drift import strapdown as sd
 from pipeline.platform_drift.columns import DRIFT_SUMMARY_COLUMNS, ERRORS_COLUMNS
 from pipeline.platform_drift.scenario import ROOT, Scenario, load_scenario
-from pipeline.platform_drift.trajectory import haversine
+from pipeline.platform_drift.trajectory import haversine, haversine_clipped
+from pipeline.trouble import TROUBLE_COLUMNS, Trouble
 
 __all__ = [
     "ERRORS_COLUMNS",
@@ -61,6 +68,7 @@ __all__ = [
     "SUMMARY_COLUMNS",
     "SCHEMES",
     "DIAGNOSTIC_SCHEME",
+    "TROUBLE_KINDS",
     "simulate_errors",
     "summary_frame",
     "crossover",
@@ -76,6 +84,8 @@ CROSSOVER_AFTER_S = 300.0
 SCENARIO_DIR = ROOT / "config" / "scenarios" / "platform_drift"
 RESULTS_DIR = ROOT / "results" / "platform_drift"
 GENERATED = ROOT / "pipeline" / "generated" / "platform_drift.py"
+#: the numerical trouble counted per curve point (see the module docstring)
+TROUBLE_KINDS = ("eq36_undefined", "clipped_arcsine", "non_finite")
 
 
 def _long(t: np.ndarray, curves: dict[tuple[str, str], np.ndarray]) -> pd.DataFrame:
@@ -87,9 +97,16 @@ def _long(t: np.ndarray, curves: dict[tuple[str, str], np.ndarray]) -> pd.DataFr
 
 
 def simulate_errors(
-    sc: Scenario, duration: float, log=print
+    sc: Scenario,
+    duration: float,
+    log=print,
+    trouble: list[pd.DataFrame] | None = None,
+    run: str = "main",
+    case_prefix: str = "",
 ) -> tuple[pd.DataFrame, pd.DataFrame, dict]:
-    """Errors of every case and scheme over ``duration``; (errors, diagnostic, info)."""
+    """Errors of every case and scheme over ``duration``; (errors, diagnostic, info). Given
+    ``trouble`` (a list), appends the numerical trouble of every curve (rows of
+    :data:`~pipeline.trouble.TROUBLE_COLUMNS`, run ``run``, case ``case_prefix + case``)."""
     traj = sc.trajectory()
     t = sc.times(duration)
     lat_true, lon_true = traj.latlon(t)
@@ -109,17 +126,26 @@ def simulate_errors(
     )
 
     curves, diag = {}, {}
+    counts = Trouble(TROUBLE_KINDS)
     for i, case in enumerate(sc.cases):
-        curves[case, "proposed_simulated"] = radius * haversine(
-            lat_true, lon_true, plat["lat"][i], plat["lon"][i]
-        )
+        pos = {
+            "proposed_simulated": (plat["lat"][i], plat["lon"][i]),
+            "strapdown": (strap["lat"][i], strap["lon"][i]),
+            DIAGNOSTIC_SCHEME: (plat["lat_diag"][i], plat["lon_diag"][i]),
+        }
+        err = {}
+        for scheme, (lat, lon) in pos.items():
+            err[scheme] = radius * haversine(lat_true, lon_true, lat, lon)
+            clipped = haversine_clipped(lat_true, lon_true, lat, lon)
+            counts.mark(f"{case}/{scheme}", "clipped_arcsine", clipped)
+        curves[case, "proposed_simulated"] = err["proposed_simulated"]
         curves[case, "proposed_analytic"] = analytic.error_m(sc, case, t)
-        curves[case, "strapdown"] = radius * haversine(
-            lat_true, lon_true, strap["lat"][i], strap["lon"][i]
-        )
-        diag[case, DIAGNOSTIC_SCHEME] = radius * haversine(
-            lat_true, lon_true, plat["lat_diag"][i], plat["lon_diag"][i]
-        )
+        curves[case, "strapdown"] = err["strapdown"]
+        diag[case, DIAGNOSTIC_SCHEME] = err[DIAGNOSTIC_SCHEME]
+        undefined = bool(analytic.eq36_undefined(sc)) and sc.platform_drift(case)[2] != 0.0
+        counts.mark(f"{case}/proposed_analytic", "eq36_undefined", np.full(t.shape, undefined))
+    if trouble is not None:
+        trouble.append(_trouble_frame(counts, {**curves, **diag}, run, case_prefix))
     info = {"nfev_platform": int(plat["nfev"]), "nfev_strapdown": int(strap["nfev"])}
     if "none" in sc.cases:
         info["no_drift_floor_m"] = {
@@ -133,6 +159,17 @@ def simulate_errors(
         max(np.linalg.norm(gen.ground_velocity(*g.v_i, *g.r_i, *w_ie)) for g in ground)
     )
     return _long(t, curves), _long(t, diag), info
+
+
+def _trouble_frame(
+    counts: Trouble, curves: dict[tuple[str, str], np.ndarray], run: str, case_prefix: str
+) -> pd.DataFrame:
+    """The trouble rows of every curve: case and scheme, in the order of errors.csv."""
+    flat = counts.frame({f"{c}/{s}": v for (c, s), v in curves.items()}, run)
+    case_scheme = flat["method"].str.split("/", n=1, expand=True)
+    flat["case"] = case_prefix + case_scheme[0]
+    flat["method"] = case_scheme[1]
+    return flat[TROUBLE_COLUMNS]
 
 
 def crossover(t: np.ndarray, strap: np.ndarray, other: np.ndarray) -> float:
@@ -187,7 +224,8 @@ def run_scenario(
 
     sc = scenario if isinstance(scenario, Scenario) else load_scenario(scenario)
     out_dir = Path(out_dir)
-    errors, diag, info = simulate_errors(sc, sc.duration, log)
+    trouble: list[pd.DataFrame] = []
+    errors, diag, info = simulate_errors(sc, sc.duration, log, trouble, "main")
     written = {
         "errors": write_csv(out_dir / "errors.csv", errors, ERRORS_COLUMNS),
         "errors_diagnostic": write_csv(out_dir / "errors_diagnostic.csv", diag, ERRORS_COLUMNS),
@@ -195,7 +233,7 @@ def run_scenario(
     }
     runs = {"main": {"duration_s": sc.duration, **info}}
     if sc.long_duration is not None:
-        errors_l, diag_l, info_l = simulate_errors(sc, sc.long_duration, log)
+        errors_l, diag_l, info_l = simulate_errors(sc, sc.long_duration, log, trouble, "long")
         written["errors_long"] = write_csv(out_dir / "errors_long.csv", errors_l, ERRORS_COLUMNS)
         written["errors_long_diagnostic"] = write_csv(
             out_dir / "errors_long_diagnostic.csv", diag_l, ERRORS_COLUMNS
@@ -207,6 +245,9 @@ def run_scenario(
         written["errors_long_diagnostic"] = write_csv(
             out_dir / "errors_long_diagnostic.csv", empty, ERRORS_COLUMNS
         )
+    written["numerical_trouble"] = write_csv(
+        out_dir / "numerical_trouble.csv", pd.concat(trouble, ignore_index=True), TROUBLE_COLUMNS
+    )
     prov = provenance(
         scenario=sc.name,
         scenario_file=_relative(sc.path),

@@ -40,9 +40,14 @@ def figures(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -
 
 def latitude_sweep(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
     """Error at 2 h against latitude (a figure the paper lacks)."""
+    import pandas as pd
+
     from pipeline.atomic import write_csv
     from pipeline.platform_drift.sweep import SWEEP_COLUMNS, plot, sweep
+    from pipeline.trouble import TROUBLE_COLUMNS
 
-    frame = sweep(inputs["scenario"], log=log)
+    trouble: list[pd.DataFrame] = []
+    frame = sweep(inputs["scenario"], log=log, trouble=trouble)
     write_csv(outputs["csv"], frame, SWEEP_COLUMNS)
+    write_csv(outputs["trouble"], pd.concat(trouble, ignore_index=True), TROUBLE_COLUMNS)
     plot(frame, outputs["png"])  # and the SVG beside it

@@ -2,7 +2,9 @@
 
 The stationary scenario is rerun at latitudes 0-80 deg (everything else as in its file); the
 2 h error of each curve goes to ``results/platform_drift/latitude_sweep.csv``
-(``lat_deg,case,scheme,error_2h_m``) and ``figures/fig9_latitude.png``.
+(``lat_deg,case,scheme,error_2h_m``) and ``figures/fig9_latitude.png``, the numerical trouble
+of every curve to ``latitude_sweep_trouble.csv`` (:data:`pipeline.trouble.TROUBLE_COLUMNS`;
+at latitude 0 eq. 36 is undefined, so the analytic channel-3 value is empty there).
 
 ``python -m pipeline.platform_drift.sweep``
 """
@@ -39,14 +41,23 @@ LATITUDES_DEG = (0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0)
 CASES = ("ch1", "ch3")
 
 
-def sweep(scenario: str | Path, latitudes=LATITUDES_DEG, log=print) -> pd.DataFrame:
-    """2 h error of every scheme for the stationary scenario moved to each latitude."""
+def sweep(
+    scenario: str | Path,
+    latitudes=LATITUDES_DEG,
+    log=print,
+    trouble: list[pd.DataFrame] | None = None,
+) -> pd.DataFrame:
+    """2 h error of every scheme for the stationary scenario moved to each latitude; given
+    ``trouble`` (a list), appends the numerical trouble of every curve (run ``sweep``, case
+    ``latitude <lat> deg, <drift case>``)."""
     sc = load_scenario(scenario)
     sc = dataclasses.replace(sc, cases=CASES)
     rows = []
     for lat in latitudes:
         moved = dataclasses.replace(sc, route=dataclasses.replace(sc.route, lat0=np.deg2rad(lat)))
-        errors, diag, _ = simulate_errors(moved, 7200.0, log=lambda m: None)
+        errors, diag, _ = simulate_errors(
+            moved, 7200.0, lambda m: None, trouble, "sweep", f"latitude {lat:g} deg, "
+        )
         both = pd.concat([errors, diag], ignore_index=True)
         final = both[both["t_s"] == both["t_s"].max()]
         for r in final.itertuples(index=False):

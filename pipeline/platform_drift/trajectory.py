@@ -110,14 +110,31 @@ def eq2_angles(c_x_nwu: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]
     return psi, phi_y, phi_x
 
 
-def haversine(lat1, lon1, lat2, lon2) -> np.ndarray:
-    """Great-circle angle (rad) between two points; exact also for tiny separations."""
+def _haversine_h(lat1, lon1, lat2, lon2) -> np.ndarray:
     lat1, lon1, lat2, lon2 = (np.asarray(a, dtype=float) for a in (lat1, lon1, lat2, lon2))
-    h = (
+    return (
         np.sin((lat2 - lat1) / 2) ** 2
         + np.cos(lat1) * np.cos(lat2) * np.sin((lon2 - lon1) / 2) ** 2
     )
-    return 2 * np.arcsin(np.sqrt(np.clip(h, 0.0, 1.0)))
+
+
+def haversine(lat1, lon1, lat2, lon2) -> np.ndarray:
+    """Great-circle angle (rad) between two points; exact also for tiny separations. The
+    haversine ``h`` is clipped to [0, 1] (:func:`haversine_clipped` says where it was)."""
+    return 2 * np.arcsin(np.sqrt(np.clip(_haversine_h(lat1, lon1, lat2, lon2), 0.0, 1.0)))
+
+
+def haversine_clipped(lat1, lon1, lat2, lon2) -> np.ndarray:
+    """Where :func:`haversine` clipped its arcsine's argument (h outside [0, 1]; h lies in
+    [0, 1] in exact arithmetic for every two latitudes, so only round-off or a non-finite
+    position reach the clip), as a boolean array.
+
+    >>> a = 0.6976923076923077  # antipodal points: h = 1 + 2e-16
+    >>> haversine_clipped([0.5, a], 0.0, [0.5, -a], [0.0, np.pi]).tolist()
+    [False, True]
+    """
+    h = _haversine_h(lat1, lon1, lat2, lon2)
+    return (h < 0.0) | (h > 1.0)
 
 
 class Trajectory:
