@@ -14,9 +14,9 @@ __all__ = ["trouble_blocks"]
 
 _WORDS = {
     "clipped_arcsine": "arcsine or arccosine argument clipped to [-1, 1]",
-    "unreachable_root": "sinusoid equation beyond reach, right side clipped",
-    "complex_roots": "no real root (quartic of eq. 50: real parts used; eq. 65: no estimate)",
-    "non_finite": "estimate NaN or infinite",
+    "unreachable_root": "sinusoid equation beyond reach (right side clipped)",
+    "complex_roots": "polynomial without a real root (eq. 50: real parts used; eq. 65: none)",
+    "non_finite": "NaN or infinite estimate",
 }
 _RUNS = {
     "noise_free_real": "noise-free real run",

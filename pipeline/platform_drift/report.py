@@ -140,9 +140,9 @@ def _provenance(results: Path) -> list[Section]:
 
 
 _TROUBLE_WORDS = {
-    "eq36_undefined": "eq. 36 undefined (start latitude 0), the analytic curve left empty",
+    "eq36_undefined": "eq. 36 undefined (start latitude 0: analytic curve left empty)",
     "clipped_arcsine": "haversine argument clipped to [0, 1]",
-    "non_finite": "position error NaN or infinite",
+    "non_finite": "NaN or infinite position error",
 }
 _TROUBLE_RUNS = {
     "main": "the curves to the scenario's duration",

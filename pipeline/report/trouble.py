@@ -4,14 +4,14 @@ run, case, method and kind that met some (``numerical_trouble.csv``, :mod:`pipel
 
 >>> import pandas as pd
 >>> df = pd.DataFrame([("mc", "", "L1", "non_finite", 10, 0)], columns=TROUBLE_COLUMNS)
->>> trouble_frame_blocks(df, {"non_finite": "estimate NaN"}, {"mc": "Monte Carlo"})[0].text
-'No numerical trouble in Monte Carlo (10 trials): no estimate NaN.'
+>>> trouble_frame_blocks(df, {"non_finite": "NaN estimate"}, {"mc": "Monte Carlo"})[0].text
+'No numerical trouble in Monte Carlo (10 trials): no NaN estimate.'
 >>> df.loc[0, "n_affected"] = 3
->>> blocks = trouble_frame_blocks(df, {"non_finite": "estimate NaN"}, {"mc": "Monte Carlo"})
+>>> blocks = trouble_frame_blocks(df, {"non_finite": "NaN estimate"}, {"mc": "Monte Carlo"})
 >>> blocks[0].text.startswith("Numerical trouble in Monte Carlo (10 trials)")
 True
 >>> blocks[1].rows
-[['Monte Carlo', 'L1', 'estimate NaN', '3 of 10']]
+[['Monte Carlo', 'L1', 'NaN estimate', '3 of 10']]
 """
 
 from __future__ import annotations
@@ -42,21 +42,29 @@ def _case(case: object) -> str:
     return str(case).replace("=", " = ")
 
 
+def _count(n: int, unit: str) -> str:
+    """'1 trial', '5 trials' (``unit`` plural)."""
+    return f"{n} {unit.removesuffix('s') if n == 1 else unit}"
+
+
 def _run_words(df: pd.DataFrame, runs: Mapping[str, str], unit: str) -> str:
     """Each run with its cases and sizes, e.g. 'Monte Carlo (1000 trials), sensitivity at
-    N = 1, N = 10 (200 trials each)'."""
+    N = 1, N = 10 (200 trials each)'; more than three cases are counted, not listed."""
     parts = []
     for run, g in df.groupby("run", sort=False):
         name = runs.get(str(run), str(run))
         cases = [c for c in dict.fromkeys(g["case"].astype(str)) if c]
         sizes = sorted(set(g["n_trials"].astype(int)))
-        size = f"{sizes[0]} {unit}" if len(sizes) == 1 else f"{sizes[0]}-{sizes[-1]} {unit}"
+        size = _count(sizes[0], unit) if len(sizes) == 1 else f"{sizes[0]}-{sizes[-1]} {unit}"
         if len(cases) > 1:
             size += " each" if len(sizes) == 1 else ""
-            cases_text = ", ".join(_case(c) for c in cases)
-            if len(cases) > 4 and all(c.startswith("N=") for c in cases):
-                cases_text = f"{len(cases)} N from {cases[0][2:]} to {cases[-1][2:]}"
-            parts.append(f"{name} at {cases_text} ({size})")
+            if len(cases) > 3 and all(c.startswith("N=") for c in cases):
+                where = f" at {len(cases)} N from {cases[0][2:]} to {cases[-1][2:]}"
+            elif len(cases) > 3:
+                where = f", {len(cases)} cases"
+            else:
+                where = " at " + ", ".join(_case(c) for c in cases)
+            parts.append(f"{name}{where} ({size})")
         else:
             parts.append(f"{name}{' at ' + _case(cases[0]) if cases else ''} ({size})")
     return ", ".join(parts)
@@ -70,7 +78,8 @@ def trouble_frame_blocks(
     unit: str = "trials",
     after: str = "",
 ) -> list[Block]:
-    """Blocks for the trouble counts ``df``: ``words`` says each kind in words, ``runs`` each
+    """Blocks for the trouble counts ``df``: ``words`` says each kind in words (a noun phrase:
+    the note reads 'no <words>; no ...' when there is none), ``runs`` each
     run; ``unit`` names what ``n_trials`` counts; ``after`` (said when there is trouble) what
     the summaries did with the affected trials."""
     if df.empty:
@@ -94,7 +103,7 @@ def trouble_frame_blocks(
         }
     )
     note = (
-        f"Numerical trouble in {where}: {int(hit['n_affected'].sum())} counts in "
+        f"Numerical trouble in {where}: {int(hit['n_affected'].sum())} counted, in the "
         f"{len(hit)} row{'s' if len(hit) != 1 else ''} below."
     )
     return [

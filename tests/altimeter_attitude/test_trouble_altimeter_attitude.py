@@ -85,13 +85,12 @@ def test_page_note(tmp_path):
     ]
     pd.DataFrame(rows, columns=TROUBLE_COLUMNS).to_csv(path, index=False)
     text = filter_trouble_blocks(path)[0].text
-    assert text.startswith(
-        "No numerical trouble in Monte Carlo (100 runs), noise-free run (1 runs)"
-    )
+    assert text.startswith("No numerical trouble in Monte Carlo (100 runs), noise-free run (1 run)")
     rows[0] = ("monte_carlo", "", "ukf", "non_finite", 100, 2)
     pd.DataFrame(rows, columns=TROUBLE_COLUMNS).to_csv(path, index=False)
     blocks = filter_trouble_blocks(path)
     assert blocks[0].text.startswith("Numerical trouble in Monte Carlo (100 runs)")
+    assert "Accelerometer levelling" not in blocks[0].text  # said only where it applies
     assert blocks[1].rows == [
-        ["Monte Carlo", "ukf", "roll or pitch estimate NaN or infinite", "2 of 100"]
+        ["Monte Carlo", "ukf", "NaN or infinite roll or pitch estimate", "2 of 100"]
     ]
