@@ -14,7 +14,11 @@ approximate
     max(half a tick of the figure's axis, stated once per figure, one unit of the printed
     digit)), plus two standard errors of ours when ours is itself a Monte Carlo estimate (0 for
     a deterministic value). No item states its own tolerance. ``reproduced`` /
-    ``not_reproduced``.
+    ``not_reproduced``. Where the printed number is itself one draw of the paper's noisy
+    simulation (the package gives ``samples``: our Monte Carlo of that number), it is judged
+    like a statistical number on the values its printed form reads as: ``consistent`` when some
+    value within the tolerance of the printed one has its percentile rank in
+    :data:`RANK_BAND` (the reading interval meets the band), else ``not_reproduced``.
 statistical
     Where the published value falls in our Monte Carlo distribution: its percentile rank
     100 (#{trials < v} + #{trials = v} / 2) / n; ``consistent`` if the rank lies in
@@ -74,7 +78,7 @@ RANK_BAND = (0.5, 99.5)
 #: The verdicts a published number can get, per kind.
 NUMBER_VERDICTS = {
     "exact": ("reproduced", "not_reproduced", "not_checkable"),
-    "approximate": ("reproduced", "not_reproduced", "not_checkable"),
+    "approximate": ("reproduced", "consistent", "not_reproduced", "not_checkable"),
     "statistical": ("consistent", "not_reproduced", "not_checkable"),
 }
 #: Note of a statistical item whose noise-free value equals the published one to within one
@@ -235,6 +239,10 @@ def _approximate(item: Mapping[str, Any], found: Found) -> Judged:
         f" + 2 SE ({_g(se)}) = +-{fmt_limit(allowed)}{u}" if se else ""
     )
     tolerance += f" ({rule})"
+    if found.samples is not None:
+        from pipeline.verdicts.draws import approximate_draw
+
+        return approximate_draw(item, found, stated, rule)
     if found.value is None:
         return _missing("no reproduced value", item)
     ours = float(found.value)
