@@ -293,7 +293,9 @@ def _approximate(item: Mapping[str, Any], results: Mapping[str, Any], cause: Any
             "estimates.csv and mc_trials.csv",
         )
     truth = float(mc["truth"].iloc[0])
-    notes = [f"noise-free real {base}: {float(real['estimate']):.6g}"]
+    names = (results.get("published") or {}).get("names") or {}
+    words = names.get(base, base.replace("_", " "))
+    notes = [f"noise-free real {words}: {float(real['estimate']):.6g} {QUANTITY_UNITS[base]}"]
     row = next(
         (
             i
@@ -306,7 +308,7 @@ def _approximate(item: Mapping[str, Any], results: Mapping[str, Any], cause: Any
     at = judged_at(results, row) if row is not None else None
     if at is not None:
         sample, weights = at.samples, at.weights
-        notes.append(f"judged on the Monte Carlo mixture over N of {row['id']} ({at.notes[0]})")
+        notes.append(f"judged on the Monte Carlo mixture over N of {row['label']} ({at.notes[0]})")
     else:
         sample, weights = mc["estimate"].to_numpy(float), None
         notes.append("judged on the main Monte Carlo")

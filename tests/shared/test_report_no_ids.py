@@ -123,9 +123,12 @@ SNAKE = re.compile(r"^[a-z][a-z0-9]*(?:_[a-z0-9]+)+$")
 
 
 def results_names(root: Path = ROOT) -> set[str]:
-    """Every results file name (``*.csv``, ``*.json``) the columns modules mention and every
-    snake_case string constant they define (column names, filter and window tokens)."""
-    out: set[str] = set()
+    """Every results file name (``*.csv``, ``*.json``) the columns modules mention, every
+    snake_case string constant they define (column names, filter and window tokens) and the
+    sweep's parameter names (the values of its ``parameter`` column)."""
+    from pipeline.altimeter_attitude.sweep import PARAMETERS
+
+    out: set[str] = {p for p in PARAMETERS if SNAKE.match(p)}
     for path in [root / "pipeline" / "columns.py", *sorted(root.glob("pipeline/*/columns.py"))]:
         text = path.read_text(encoding="utf-8")
         out |= set(re.findall(r"\b\w+\.(?:csv|json)\b", text))
