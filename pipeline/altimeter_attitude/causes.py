@@ -44,6 +44,35 @@ __all__ = [
 
 ANGLES = ("roll", "pitch")
 RATE = "imu_rate_hz"
+#: a filter in a cause's text (reader words, not the results' tokens)
+FILTER_WORDS = {
+    "linear_kf": "linear KF",
+    "linear_kf_no_gamma": "linear KF without the Gamma term",
+    "ukf": "UKF",
+    "ekf": "EKF",
+    "complementary": "complementary filter",
+    "gyro_only": "gyro-only propagation",
+    "accel_leveling": "accelerometer levelling",
+}
+#: a sweep parameter in a cause's text
+PARAMETER_WORDS = {
+    "imu_rate_hz": "IMU sample rate",
+    "intensity": "manoeuvre intensity",
+    "initial_error_deg": "initial roll/pitch error",
+}
+#: the UKF tuning grid in a cause's text (the results file of pipeline.altimeter_attitude.ukf_tuning)
+TUNING_GRID = "our UKF tuning grid"
+
+
+def filter_word(token: str) -> str:
+    """A filter's name for readers.
+
+    >>> filter_word("linear_kf"), filter_word("ukf")
+    ('linear KF', 'UKF')
+    """
+    return FILTER_WORDS.get(token, token.replace("_", " "))
+
+
 UNPUBLISHED_INPUTS = (
     "its trajectory, its IMU and altimeter sample rates, its initial errors and filter tuning "
     "(k, P0, the UKF's parameters)"
@@ -144,7 +173,7 @@ def _rms_cause(res) -> Cause:
                 hit, clause = range_clause(pub, vals)
                 total += 1
                 inside += hit
-                found.append(f"{f} {q.split('_')[0]} {_SHORT[w]}: {clause}")
+                found.append(f"{filter_word(f)} {q.split('_')[0]} {_SHORT[w]}: {clause}")
             by_rate = rows[rows["parameter"] == RATE]
             col = _sweep_column(q, "after_bank")
             if col in by_rate:
@@ -152,7 +181,7 @@ def _rms_cause(res) -> Cause:
                 if fit is not None and fit[0] < 0:
                     exponents.append(-fit[0])
                     rates.append(math.exp((math.log(pub) - fit[1]) / fit[0]))
-        params = ", ".join(dict.fromkeys(sweep["parameter"]))
+        params = ", ".join(PARAMETER_WORDS.get(p, p) for p in dict.fromkeys(sweep["parameter"]))
         runs = ", ".join(str(int(n)) for n in sorted(set(sweep["n_runs"])))
         clauses.append(
             f"the paper's value lies inside the range our sweep of the unpublished {params} "
@@ -169,7 +198,7 @@ def _rms_cause(res) -> Cause:
         ukf_items = [(q, pub) for f, q, pub in items if f == "ukf"]
         if ran is not None and ukf_items:
             clauses.append(
-                f"over the {len(ran)} sigma-point settings of ukf_tuning.csv the UKF's RMS over "
+                f"over the {len(ran)} sigma-point settings of {TUNING_GRID} the UKF's RMS over "
                 "the flight gives "
                 + "; ".join(
                     f"{q.split('_')[0]} {range_clause(pub, ran[q], 3)[1]}" for q, pub in ukf_items
@@ -197,7 +226,8 @@ def _ranking_cause(res, filt: str, ref: str) -> Cause:
     def pair(w: str) -> str:
         a, b = res.window(filt, w), res.window(ref, w)
         return (
-            f"{filt} {a['roll_rms_deg']:.3f}/{a['pitch_rms_deg']:.3f} against {ref} "
+            f"{filter_word(filt)} {a['roll_rms_deg']:.3f}/{a['pitch_rms_deg']:.3f} against "
+            f"{filter_word(ref)} "
             f"{b['roll_rms_deg']:.3f}/{b['pitch_rms_deg']:.3f} deg"
         )
 
@@ -218,7 +248,7 @@ def _ranking_cause(res, filt: str, ref: str) -> Cause:
                 wins = int((mine.loc[points, col] < theirs.loc[points, col]).sum())
                 counts.append(f"{wins} for {a} ({_SHORT[w]})")
         parts.append(
-            f"{filt} has the lower RMS at "
+            f"the {filter_word(filt)} has the lower RMS at "
             + ", ".join(counts)
             + f" of the {len(points)} (parameter, value) points of the sweep"
         )
@@ -246,9 +276,10 @@ def _level_flight_cause(res, checks: Sequence[NeesCheck]) -> Cause | None:
         return None
     lo, hi = checks[0].band
     shares = ", ".join(
-        f"{c.filter} {c.below_level:.0%} of {round(c.below * c.n_times)}" for c in checks
+        f"{filter_word(c.filter)} {c.below_level:.0%} of {round(c.below * c.n_times)}"
+        for c in checks
     )
-    after = ", ".join(f"{c.filter} {c.after_bank_mean:.2f}" for c in checks)
+    after = ", ".join(f"{filter_word(c.filter)} {c.after_bank_mean:.2f}" for c in checks)
     inside = all(lo <= c.after_bank_mean <= hi for c in checks)
     return Cause(
         "model",
@@ -279,7 +310,7 @@ def _bias_cause(res, check: NeesCheck) -> Cause | None:
         return None
     lo, hi = check.band
     text = (
-        f"The {check.filter}'s {check.angle} error is mostly a deterministic bias of its own "
+        f"The {filter_word(check.filter)}'s {check.angle} error is mostly a deterministic bias of its own "
         f"prediction, which its sigma does not contain: on one noise-free run with an exact "
         f"start its {check.angle} RMS is {nf:.3f} deg, {nf / mc:.0%} of its Monte Carlo "
         f"{mc:.3f} deg, and its {check.angle} NEES is above the band [{lo:.2f}, {hi:.2f}] at "
@@ -339,7 +370,7 @@ def tuning_clause(res, angle: str) -> tuple[bool, str]:
         f"; {lead} of the grid (alpha {alphas}; kappa {kappas}; centre weight W0 from "
         f"{w0.min():.3g} to {w0.max():.3g}) keep the noise-free {angle} RMS at least half the "
         f"Monte Carlo one; the noise-free RMS spans [{nf.min():.3f}, {nf.max():.3f}] deg and "
-        f"the Monte Carlo one [{mc.min():.3f}, {mc.max():.3f}] deg (ukf_tuning.csv)"
+        f"the Monte Carlo one [{mc.min():.3f}, {mc.max():.3f}] deg ({TUNING_GRID})"
     )
 
 
@@ -350,7 +381,7 @@ def tuning_spans(res) -> str:
         return ""
     r, p = ran["roll_rms_deg"], ran["pitch_rms_deg"]
     return (
-        f"over the {len(ran)} sigma-point settings of ukf_tuning.csv the UKF's roll/pitch RMS "
+        f"over the {len(ran)} sigma-point settings of {TUNING_GRID} the UKF's roll/pitch RMS "
         f"over the flight spans [{r.min():.3f}, {r.max():.3f}]/[{p.min():.3f}, {p.max():.3f}] deg"
     )
 
@@ -367,7 +398,8 @@ def _ekf_cause(filt: str, ref: str, tail: dict[str, tuple[float, float]]) -> Cau
         "unpublished",
         "the EKF's settings are not given",
         f"The paper gives no setting of its EKF (discretisation, noise model, initial errors); "
-        f"ours ({filt}: the UKF's Euler-angle model linearised at the estimate) ends the flight "
-        f"at {span(ratios)} times the {ref}'s RMS over the last tenth ({shown}), so a divergence "
+        f"ours ({filter_word(filt)}: the UKF's Euler-angle model linearised at the estimate) "
+        f"ends the flight at {span(ratios)} times the {filter_word(ref)}'s RMS over the last "
+        f"tenth ({shown}), so a divergence "
         "cannot be reproduced from what the paper publishes.",
     )

@@ -259,10 +259,11 @@ def _same(results: Mapping[str, Any], quantity: str, a: str, b: str) -> Cause | 
         if pa is not None and pb is not None and pa["value"] != pb["value"]
         else ""
     )
+    names = (results.get("published") or {}).get("names") or {}
     text = (
         f"Azimuth methods {a[1:]} and {b[1:]} solve the same gyro readings (tau = {taus} deg) "
         "for the same bias, scale factor and azimuth, so they are one estimator: their "
-        f"{quantity} errors agree to {biggest:.0e} % on every one of {trials} Monte Carlo "
+        f"{names.get(quantity, quantity.replace('_', ' '))} errors agree to {biggest:.0e} % on every one of {trials} Monte Carlo "
         f"trials at {len(mc)} value{'s' if len(mc) != 1 else ''} of N and noise-free, and method {b[1:]} cannot be more "
         f"accurate than method {a[1:]}{printed}"
     )

@@ -82,7 +82,9 @@ N_PROFILE_COLUMNS = [
 ]
 # results/<slug>/<scenario>/n_rows.csv: per statistical row and grid N, the Gaussian fitted to
 # the trials (mean, std, KS distance), the published value's percentile rank among the trials,
-# whether it is inside the band, the row's robust log-likelihood, the posterior probability
+# whether it is inside the band, the row's robust log-likelihood as it enters the composite
+# likelihood (times row_weight), row_weight (1 / sum_j r_ij^2 over the used rows, r the
+# correlation of the rows' trials: correlated rows share their vote), the posterior probability
 # that the row comes from the contamination component (a run the paper does not describe),
 # whether the row is used (not excluded by rule 1), and the row's leave-one-out weight of that
 # N (the likelihood of the other rows, normalised over the grid; the row is judged on the
@@ -99,6 +101,7 @@ N_ROW_COLUMNS = [
     "rank_pct",
     "in_band",
     "log_lik",
+    "row_weight",
     "outlier_prob",
     "used",
     "weight",
@@ -115,8 +118,20 @@ N_ROBUSTNESS_COLUMNS = [
     "not_consistent",
 ]
 # results/<slug>/<scenario>/mc_trials_judged.csv: the Monte Carlo trials (as mc_trials.csv) at
-# every grid N to which some statistical row gives weight.
+# every grid N of the N inference (the rows' weights, and those of the reweighted likelihoods
+# of the sensitivity, may fall on any).
+# results/<slug>/n_sensitivity.csv: the N inference with the rows reweighted
+# (pipeline/north_finding/n_sensitivity.py): inferred N, its weight, effective number of rows,
+# and the verdict rows that change.
 MC_JUDGED_COLUMNS = ["n_avg", *MC_TRIAL_COLUMNS]
+N_SENSITIVITY_COLUMNS = [
+    "variant",
+    "n_inferred",
+    "weight_at_n",
+    "effective_rows",
+    "n_changed",
+    "changed",
+]
 
 LEVELING_METHODS = ("L1", "L2", "L3", "L4", "L5")
 AZIMUTH_METHODS = ("A1c1", "A1c2", "A2", "A3", "A4", "A5", "A6")

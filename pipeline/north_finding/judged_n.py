@@ -87,14 +87,14 @@ def judged_at(results: Mapping[str, Any], item: Mapping[str, Any]) -> JudgedAt |
         int(n): float(w) for n, w in zip(rows["n_avg"], rows["weight"], strict=True) if w > 0
     }
     samples, weights, dropped, total_trials = [], [], 0, 0
+    groups = _trials_by_key(results, mc)
     for n, w in weight_by_n.items():
-        pick = mc[(mc["n_avg"] == n) & (mc["method"] == method) & (mc["quantity"] == quantity)]
-        if pick.empty:
+        s = groups.get((n, method, quantity))
+        if s is None:
             raise ValueError(
                 f"mc_trials_judged.csv: no trials at n_avg = {n} for method {method}, quantity "
                 f"{quantity} (row {item['id']}); allowed: the N inference's own output"
             )
-        s = pick.sort_values("trial")["estimate"].to_numpy(dtype=float)
         total_trials += s.size
         dropped += int((~np.isfinite(s)).sum())
         s = s[np.isfinite(s)]
@@ -136,6 +136,21 @@ def judged_at(results: Mapping[str, Any], item: Mapping[str, Any]) -> JudgedAt |
         consistent,
         tuple(notes),
     )
+
+
+def _trials_by_key(
+    results: Mapping[str, Any], mc: pd.DataFrame
+) -> dict[tuple[int, str, str], np.ndarray]:
+    """(n_avg, method, quantity) -> the estimates in trial order, computed once per results."""
+    if isinstance(results, MutableMapping) and "_trials_by_key" in results:
+        return results["_trials_by_key"]
+    out = {
+        (int(n), str(m), str(q)): g.sort_values("trial")["estimate"].to_numpy(dtype=float)
+        for (n, m, q), g in mc.groupby(["n_avg", "method", "quantity"], sort=False)
+    }
+    if isinstance(results, MutableMapping):
+        results["_trials_by_key"] = out
+    return out
 
 
 def mixed_n(results: Mapping[str, Any], item: Mapping[str, Any]) -> Cause | None:

@@ -22,10 +22,17 @@ Robust rule
     from a run the paper does not describe, taken as our model at the grid's smallest N (the
     widest spread the grid considers): ``L = (1 - eps) p(N) + eps p(N_min)``. A row our model
     cannot place at N then costs at most log(1/eps) nats, so no single row drags the estimate.
+Correlated rows
+    Rows that share readings are correlated (one method's roll and pitch; azimuth methods 4 and
+    5, the same estimator; the gyro scale factors of methods 4 to 6). Multiplied as if
+    independent they would count one piece of evidence several times and make the weights over
+    N too sharp. So the likelihood is a weighted composite likelihood: row i's log-likelihood
+    enters times ``row_weight`` = 1 / sum_j r_ij^2 (:func:`row_weights`), r the correlation of
+    the rows' Monte Carlo estimates over the same trials at the grid's largest N (where the
+    averaged noise enters linearly, so r does not depend on N), summed over the used rows: k
+    copies of one row count once in all, a row uncorrelated with the others counts fully.
 Profile and leave-one-out posterior predictive check
-    The rows are treated as independent (a composite likelihood: rows that share readings are
-    correlated, which leaves the maximiser's expectation in place but would overstate a
-    confidence interval, so none is claimed). The profile is the sum over the used rows. Each
+    The profile is the sum over the used rows of the weighted log-likelihoods. Each
     row is judged on its leave-one-out posterior predictive distribution: weights over the grid
     w_N proportional to exp(profile of the OTHER used rows at N) (a flat prior over log10 N on
     the grid; weights below :data:`MIN_WEIGHT` set to 0, the rest renormalised), and the
@@ -36,7 +43,8 @@ Profile and leave-one-out posterior predictive check
 
 Files (results/north_finding/<published scenario>/, written by
 :mod:`pipeline.north_finding.run_inference`): ``n_profile.csv``, ``n_rows.csv``,
-``mc_trials_judged.csv`` (the trials at every N some row gives weight) and ``n_robustness.csv``
+``mc_trials_judged.csv`` (the trials at every grid N: the rows' weights, and those of the
+reweighted likelihoods of :mod:`pipeline.north_finding.n_sensitivity`, may fall on any) and ``n_robustness.csv``
 (the inference rerun at other contamination probabilities and on the grid's powers of ten),
 columns in :mod:`pipeline.north_finding.columns`.
 
@@ -66,7 +74,7 @@ from pipeline.verdicts.kinds import RANK_BAND, percentile_rank
 from pipeline.verdicts.printed import unit
 
 #: Leave-one-out weights below this are set to 0 (and the rest renormalised): a grid N that
-#: carries less moves a percentile rank by less than 1e-4 and its trials need not be stored.
+#: carries less moves a percentile rank by less than 1e-4.
 MIN_WEIGHT = 1e-6
 
 __all__ = [
@@ -81,6 +89,7 @@ __all__ = [
     "mixture_log_lik",
     "printed_interval",
     "profile",
+    "row_weights",
 ]
 
 
@@ -232,6 +241,26 @@ def consistent_range(n_avg: Sequence[int], in_band: Sequence[bool]) -> str:
     return f"consistent for {fmt_grid(where[0])} <= N <= {fmt_grid(where[-1])} {grid}"
 
 
+def row_weights(estimates: Sequence[np.ndarray], used: np.ndarray) -> np.ndarray:
+    """1 / sum_j r_ij^2 over the used rows j (r_ii = 1; a constant row correlates with none);
+    1 for an unused row.
+
+    >>> x = np.array([0.0, 1.0, 2.0, 3.0])
+    >>> row_weights([x, 2 * x, np.array([1.0, -1.0, -1.0, 1.0])], np.array([True] * 3)).tolist()
+    [0.5, 0.5, 1.0]
+    """
+    used = np.asarray(used, dtype=bool)
+    size = min(np.size(e) for e in estimates)
+    x = np.array([np.asarray(e, dtype=float)[:size] for e in estimates])
+    x = x[:, np.all(np.isfinite(x), axis=0)]  # the trials every row has
+    with np.errstate(invalid="ignore", divide="ignore"):
+        r = np.corrcoef(x)
+    r = np.nan_to_num(np.atleast_2d(r), nan=0.0)
+    np.fill_diagonal(r, 1.0)
+    share = np.sum(r[:, used] ** 2, axis=1)
+    return np.where(used, 1.0 / share, 1.0)
+
+
 def infer_frames(
     run: Callable[[int], Mapping[tuple[str, str], np.ndarray]],
     trials: Callable[[Mapping[tuple[str, str], np.ndarray]], pd.DataFrame],
@@ -264,9 +293,12 @@ def infer_frames(
             stats[i, k] = (mean, std, ks)
     in_band = (ranks >= lo_band) & (ranks <= hi_band)
     used = in_band.any(axis=1)
+    keys = [(item["select"]["method"], item["quantity"]) for item in items]
+    share = row_weights([estimates[grid[-1]][k] for k in keys], used)
     log_lik = mixture_log_lik(log_p, eps)
     outlier = np.exp(np.log(eps) + log_p[:, :1] - log_lik)
-    robust, plain = profile(log_lik, used), profile(log_p, used)
+    log_lik = share[:, None] * log_lik
+    robust, plain = profile(log_lik, used), profile(share[:, None] * log_p, used)
     best = int(np.argmax(robust))
     weights = loo_weights(log_lik, used)
     rows = [
@@ -280,6 +312,7 @@ def infer_frames(
             ranks[i, k],
             bool(in_band[i, k]),
             log_lik[i, k],
+            share[i],
             outlier[i, k],
             bool(used[i]),
             weights[i, k],
@@ -299,8 +332,7 @@ def infer_frames(
             "inferred": [k == best for k in range(len(grid))],
         }
     )
-    judged_n = [n for k, n in enumerate(grid) if (weights[:, k] > 0).any()]
-    parts = [trials(estimates[n]).assign(n_avg=n) for n in judged_n]
+    parts = [trials(estimates[n]).assign(n_avg=n) for n in grid]
     mc = pd.concat(parts, ignore_index=True) if parts else pd.DataFrame(columns=MC_JUDGED_COLUMNS)
     return {
         "n_profile": prof[N_PROFILE_COLUMNS],

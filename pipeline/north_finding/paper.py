@@ -151,7 +151,10 @@ STEPS = (
             "scenario_schema": SCENARIO_SCHEMA,
             "audit": f"{ctx.results}/equation_audit.csv",
         },
-        outputs=lambda ctx: {"verdicts": f"{ctx.results}/verdicts.csv"},
+        outputs=lambda ctx: {
+            "verdicts": f"{ctx.results}/verdicts.csv",
+            "n_sensitivity": f"{ctx.results}/n_sensitivity.csv",
+        },
         report={"verdicts": ("Verdicts", "verdicts")},
     ),
     Step(
@@ -168,6 +171,7 @@ STEPS = (
         lambda ctx: {
             "scenarios": [f for name in SCENARIO_FILES for f in ctx.per_scenario(name)],
             "n_inference": [_published(ctx, f) for f in (*INFERENCE_FILES[:3], "n_trouble.csv")],
+            "n_sensitivity": f"{ctx.results}/n_sensitivity.csv",
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],
             "scenario_schema": SCENARIO_SCHEMA,
             "figures": _figures(ctx)["png"],

@@ -16,6 +16,15 @@ claim that ranks methods is judged on each. Two methods are
   :data:`Z_RESOLVE` standard errors from 0 (the noise-free set has no noise: any difference
   beyond the tie separates).
 
+Where the results hold the N inference (``n_rows.csv``, ``mc_trials_judged.csv``,
+:mod:`pipeline.north_finding.n_inference`), :func:`posterior_set` gives the rank set the claims
+are judged on: our Monte Carlo at every grid N mixed with the posterior weights of all the
+statistical rows used (flat prior over log10 N, the weights of ``n_profile.csv``), i.e. at the
+N the paper's own printed values imply, as the statistical rows are. Its mean squared % error
+is sum_N w_N ms_N; the paired difference of two methods is, per trial, sum_N w_N d_N (the
+trials at every N share their standard normals), so its standard error is that of the mean of
+those per-trial values.
+
 >>> fmt_n(1), fmt_n(100), fmt_n(10000), fmt_n(1000000), fmt_n(25000)
 ('1', '100', '1e4', '1e6', '25000')
 """
@@ -23,13 +32,14 @@ claim that ranks methods is judged on each. Two methods are
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Mapping, MutableMapping, Sequence
 from dataclasses import dataclass, field, replace
 
 import numpy as np
 import pandas as pd
 
 from pipeline.north_finding.columns import METHODS, RANKING_COLUMNS, RANKING_PAIR_COLUMNS
+from pipeline.north_finding.n_inference import MIN_WEIGHT, fmt_grid
 
 __all__ = [
     "NOISE_FREE",
@@ -38,6 +48,8 @@ __all__ = [
     "Comparison",
     "RankSet",
     "fmt_n",
+    "posterior_set",
+    "posterior_weights",
     "rank_sets",
     "ranking_frames",
 ]
@@ -125,12 +137,21 @@ class RankSet:
     rms: Mapping[tuple[str, str], float]
     pairs: Mapping[tuple[str, str, str], tuple[float, float, float]] = field(default_factory=dict)
     noise_free: bool = False
+    #: grid N -> posterior weight of a mixture over N (empty: one N)
+    mixture: Mapping[int, float] = field(default_factory=dict)
 
     @property
     def where(self) -> str:
         """Where the set was computed, in words."""
         if self.noise_free:
             return "noise-free"
+        if self.mixture:
+            heavy = sorted(self.mixture.items(), key=lambda kv: (-kv[1], kv[0]))
+            weights = ", ".join(f"{fmt_grid(n)}: {w:.2f}" for n, w in heavy if w >= 0.005)
+            return (
+                f"the N the tables imply (our Monte Carlo mixed over N with the posterior "
+                f"weights of the statistical rows, N {weights}), {self.n_trials} trials per N"
+            )
         n = "the scenario's N" if self.n_avg is None else f"N = {fmt_n(self.n_avg)}"
         return f"{n}, {self.n_trials} trials"
 
@@ -139,6 +160,8 @@ class RankSet:
         """The set's N in a list of N ('1e4', 'noise-free')."""
         if self.noise_free:
             return NOISE_FREE
+        if self.mixture:
+            return "the inferred N"
         return "the scenario's N" if self.n_avg is None else fmt_n(self.n_avg)
 
     def get(self, method: str, quantity: str) -> float | None:
@@ -232,3 +255,65 @@ def rank_sets(results: Mapping[str, pd.DataFrame]) -> list[RankSet]:
     if free is not None and out:
         out.append(free)
     return out
+
+
+def posterior_weights(n_rows: pd.DataFrame) -> dict[int, float]:
+    """Grid N -> the posterior weight of all used statistical rows (flat prior over the grid;
+    weights below :data:`~pipeline.north_finding.n_inference.MIN_WEIGHT` set to 0).
+
+    >>> rows = pd.DataFrame({"n_avg": [10, 100, 10, 100], "log_lik": [-1.0, -2.0, -3.0, -1.0],
+    ...                      "used": [True, True, True, False]})
+    >>> {n: round(w, 4) for n, w in posterior_weights(rows).items()}
+    {10: 0.1192, 100: 0.8808}
+    """
+    used = n_rows[n_rows["used"].astype(bool)]
+    grid = sorted({int(n) for n in n_rows["n_avg"]})
+    total = used.groupby("n_avg")["log_lik"].sum().reindex(grid, fill_value=0.0).to_numpy(float)
+    w = np.exp(total - np.max(total))
+    w /= w.sum()
+    w[w < MIN_WEIGHT] = 0.0
+    w /= w.sum()
+    return {n: float(x) for n, x in zip(grid, w, strict=True) if x > 0}
+
+
+def posterior_set(results: Mapping[str, pd.DataFrame]) -> RankSet | None:
+    """The rank set at the N the statistical rows imply (None: no N inference in the results);
+    computed once per results mapping."""
+    if isinstance(results, MutableMapping) and "_posterior_set" in results:
+        return results["_posterior_set"]
+    out = _posterior_set(results)
+    if isinstance(results, MutableMapping):
+        results["_posterior_set"] = out
+    return out
+
+
+def _posterior_set(results: Mapping[str, pd.DataFrame]) -> RankSet | None:
+    n_rows, mc = results.get("n_rows"), results.get("mc_trials_judged")
+    if n_rows is None or n_rows.empty or mc is None or mc.empty:
+        return None
+    weights = posterior_weights(n_rows)
+    missing = sorted(set(weights) - {int(n) for n in mc["n_avg"]})
+    if missing:
+        raise ValueError(
+            f"mc_trials_judged.csv: no trials at n_avg = {missing}, where the statistical rows "
+            "put posterior weight; the N inference is stale (rerun the infer_n step)"
+        )
+    errors: dict[tuple[str, str], dict[int, np.ndarray]] = {}
+    picked = mc[mc["n_avg"].isin(list(weights))]
+    for (n, m, q), g in picked.groupby(["n_avg", "method", "quantity"], sort=True):
+        errors.setdefault((str(m), str(q)), {})[int(n)] = g.sort_values("trial")[
+            "error_pct"
+        ].to_numpy(float)
+    rms, pairs, sizes = {}, {}, set()
+    for key, by_n in errors.items():
+        rms[key] = float(np.sqrt(sum(w * np.mean(by_n[n] ** 2) for n, w in weights.items())))
+        sizes.update(v.size for v in by_n.values())
+    for (a, q), ea in errors.items():
+        for (b, q2), eb in errors.items():
+            if q2 != q or a == b or METHODS.index(a) > METHODS.index(b):
+                continue
+            d = sum(w * (ea[n] ** 2 - eb[n] ** 2) for n, w in weights.items())
+            se = float(np.std(d, ddof=1) / np.sqrt(d.size)) if d.size > 1 else math.nan
+            big = max(float(np.max(np.abs(ea[n] - eb[n]))) for n in weights)
+            pairs[q, a, b] = (float(np.mean(d)), se, big)
+    return RankSet("", None, int(min(sizes)), rms, pairs, mixture=weights)

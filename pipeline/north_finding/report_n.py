@@ -18,11 +18,13 @@ from pipeline.north_finding.columns import (
     N_PROFILE_COLUMNS,
     N_ROBUSTNESS_COLUMNS,
     N_ROW_COLUMNS,
+    N_SENSITIVITY_COLUMNS,
 )
 from pipeline.north_finding.n_inference import fmt_grid, posterior_range
 from pipeline.north_finding.report_results import read_csv
 from pipeline.north_finding.report_trouble import trouble_blocks
 from pipeline.report.model import Block, Paragraph, Section, frame_table, not_available
+from pipeline.report.vocabulary import word
 
 __all__ = ["KS_5PCT", "n_inference_section"]
 
@@ -78,9 +80,53 @@ def _robustness(d: Path, label: Callable[[str], str]) -> list[Block]:
     ]
 
 
+#: the sensitivity's variants in words
+_VARIANT_WORDS = {
+    "as judged": "as judged (correlated rows down-weighted)",
+    "rows as independent": "every row weighs 1 (as if independent)",
+    "explained rows excluded": "as judged, rows failing for a known cause excluded",
+}
+
+
+def _row_weights(d: Path, label: Callable[[str], str]) -> list[Block]:
+    """The sensitivity of the verdicts to how the rows are weighed (n_sensitivity.csv)."""
+    sens = read_csv(d.parent / "n_sensitivity.csv", N_SENSITIVITY_COLUMNS)
+    if sens is None or sens.empty:
+        return []
+
+    def changes(text: Any) -> str:
+        if not isinstance(text, str) or not text:
+            return "none"
+        parts = []
+        for change in text.split("; "):
+            row_id, _, verdicts = change.partition(": ")
+            old, _, new = verdicts.partition(" -> ")
+            parts.append(f"{label(row_id)}: {word(old)} -> {word(new)}")
+        return "; ".join(parts)
+
+    table = pd.DataFrame(
+        {
+            "rows weighed": sens["variant"].map(lambda v: _VARIANT_WORDS.get(v, v)),
+            "N inferred": sens["n_inferred"].astype(int).map(fmt_grid),
+            "weight there": sens["weight_at_n"].map(lambda x: f"{x:.2f}"),
+            "effective rows": sens["effective_rows"].map(lambda x: f"{x:.1f}"),
+            "verdicts that change": sens["changed"].map(changes),
+        }
+    )
+    return [
+        frame_table(
+            table,
+            caption="How much the verdicts rest on weighing the rows: correlated rows share "
+            "one vote (as judged), all rows as independent, and the failing rows with a known "
+            "cause left out of the likelihood",
+        )
+    ]
+
+
 def labeller(published: Mapping[str, Any] | None) -> Callable[[str], str]:
     """A row's name for readers: its item's label and the paper's name of the method
-    ('Table 9, azimuth method 3'); the id itself for an id the published file lacks.
+    ('Table 9, azimuth method 3'), or a claim's text; the id itself for an id the published
+    file lacks.
 
     >>> labeller({"items": [{"id": "T9.psi.A3", "label": "Table 9",
     ...   "select": {"method": "A3"}}], "names": {"A3": "azimuth method 3"}})("T9.psi.A3")
@@ -93,6 +139,8 @@ def labeller(published: Mapping[str, Any] | None) -> Callable[[str], str]:
         method = (item.get("select") or {}).get("method")
         name = names.get(method, f"method {method}") if method else ""
         by_id[item["id"]] = f"{item.get('label', item['id'])}" + (f", {name}" if name else "")
+    for claim in published.get("claims", []):
+        by_id[claim["id"]] = f"the claim '{claim['text']}' ({claim.get('label', '')})"
     return lambda row_id: by_id.get(row_id, row_id)
 
 
@@ -126,6 +174,9 @@ def n_inference_section(
     at_best = rows[rows["n_avg"] == best]
     far = [label(i) for i in at_best.loc[at_best["outlier_prob"] > 0.5, "id"].tolist()]
     plain_best = int(prof["n_avg"].iloc[int(prof["log_lik_gaussian"].to_numpy().argmax())])
+    first = rows.drop_duplicates("id")
+    n_used = int(first["used"].astype(bool).sum())
+    eff = float(first.loc[first["used"].astype(bool), "row_weight"].sum())
     text = (
         "The paper averages its 5 % white noise 'as much as possible' but gives no number of "
         "samples N, and the spread of every real-sensor value scales as 1/sqrt(N); the "
@@ -134,7 +185,10 @@ def n_inference_section(
         f"({fmt_grid(grid[0])} to {fmt_grid(grid[-1])}, half-decades), a Gaussian fitted to our "
         "Monte Carlo trials at that N gives the probability of the printed value (every number "
         "that prints as it); the robust rule and the leave-one-out posterior predictive check are "
-        "the decision 'n_inference' in the assumptions. All rows together imply "
+        "the decision 'n_inference' in the assumptions. Rows that share readings are "
+        "correlated and share their vote: each row's log-likelihood counts 1 / sum_j r_ij^2 "
+        f"(r the correlation of the rows' trials), {eff:.1f} effective rows of {n_used} used. "
+        "All rows together imply "
         f"N = {fmt_grid(best)} samples averaged per table position (the maximum; the profile "
         "below shows how flat it is). Each row is judged on the mixture over the grid N of our "
         "Monte Carlo trials at N, weighted by the likelihood of the other rows at N (flat prior "
@@ -171,6 +225,7 @@ def n_inference_section(
         Paragraph(text),
         _profile_table(prof),
         *_robustness(d, label),
+        *_row_weights(d, label),
         *trouble_blocks(d / "n_trouble.csv"),
     ]
     return Section("n-inference", title, blocks)

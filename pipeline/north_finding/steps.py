@@ -35,5 +35,6 @@ def verdicts(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) 
         outputs["verdicts"],
         scenario=inputs["scenario"],
         audit=inputs["audit"],
+        sensitivity_out=outputs["n_sensitivity"],
     )
     log(frame["verdict"].value_counts().to_string())

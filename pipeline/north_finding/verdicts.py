@@ -24,7 +24,9 @@ from pathlib import Path
 
 import pandas as pd
 
+from pipeline.atomic import write_csv
 from pipeline.north_finding.claims import CLAIMS
+from pipeline.north_finding.columns import N_SENSITIVITY_COLUMNS
 from pipeline.north_finding.quantities import check_item, locate, read_results
 from pipeline.verdicts import engine
 from pipeline.verdicts.published import load_published as _load
@@ -43,32 +45,54 @@ def write_verdicts(
     out_path: str | Path,
     scenario: str | Path | None = None,
     audit: str | Path | None = None,
+    sensitivity_out: str | Path | None = None,
 ) -> pd.DataFrame:
     """Judge every published number and claim; write ``out_path`` atomically.
 
     ``results_dir`` is the published scenario's folder (estimates.csv, mc_trials.csv,
     error_budget.csv, and the ranking files where present); ``scenario`` its scenario file and
     ``audit`` the equation audit, cited by the causes of failing rows (optional). The published
-    file is validated before any results file is read.
+    file is validated before any results file is read. With ``sensitivity_out``, the verdicts
+    judged again on reweighted N likelihoods (:mod:`pipeline.north_finding.n_sensitivity`) are
+    written there (no rows where the results hold no N inference).
     """
+    read_once: dict = {}
 
     def read() -> dict:
         from pipeline.north_finding.scenario import load_scenario
 
-        return read_results(
+        read_once["results"] = read_results(
             results_dir,
             scenario=load_scenario(scenario) if scenario is not None else None,
             audit=audit,
             published=load_published(published_path),
         )
+        return read_once["results"]
 
-    return engine.write_verdicts(
+    table = engine.write_verdicts(
         published_path,
         out_path,
         locate=locate,
         claims=CLAIMS,
         read_results=read,
         check_item=check_item,
+    )
+    if sensitivity_out is not None:
+        write_csv(sensitivity_out, _sensitivity(read_once["results"]), N_SENSITIVITY_COLUMNS)
+    return table
+
+
+def _sensitivity(results: dict) -> pd.DataFrame:
+    from pipeline.north_finding.causes import for_item
+    from pipeline.north_finding.n_sensitivity import sensitivity
+
+    if results["n_rows"].empty:
+        return pd.DataFrame(columns=N_SENSITIVITY_COLUMNS)
+    published = results["published"]
+    return sensitivity(
+        results,
+        lambda r: engine.verdict_table(published, locate, CLAIMS, r),
+        lambda item: for_item(item, results) is not None,
     )
 
 
@@ -82,8 +106,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--out", default="results/north_finding/verdicts.csv")
     parser.add_argument("--scenario", default=None, help="the published scenario's file")
     parser.add_argument("--audit", default=None, help="equation_audit.csv")
+    parser.add_argument("--sensitivity-out", default=None, help="n_sensitivity.csv")
     args = parser.parse_args(argv)
-    table = write_verdicts(args.published, args.results_dir, args.out, args.scenario, args.audit)
+    table = write_verdicts(
+        args.published, args.results_dir, args.out, args.scenario, args.audit,
+        args.sensitivity_out,
+    )  # fmt: skip
     print(f"{args.out}: {len(table)} verdicts {table['verdict'].value_counts().to_dict()}")
     return 0
 

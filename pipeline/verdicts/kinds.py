@@ -14,7 +14,11 @@ approximate
     max(half a tick of the figure's axis, stated once per figure, one unit of the printed
     digit)), plus two standard errors of ours when ours is itself a Monte Carlo estimate (0 for
     a deterministic value). No item states its own tolerance. ``reproduced`` /
-    ``not_reproduced``.
+    ``not_reproduced``. Where the printed number is itself one draw of the paper's noisy
+    simulation (the package gives ``samples``: our Monte Carlo of that number), it is judged
+    like a statistical number on the values its printed form reads as: ``consistent`` when some
+    value within the tolerance of the printed one has its percentile rank in
+    :data:`RANK_BAND` (the reading interval meets the band), else ``not_reproduced``.
 statistical
     Where the published value falls in our Monte Carlo distribution: its percentile rank
     100 (#{trials < v} + #{trials = v} / 2) / n; ``consistent`` if the rank lies in
@@ -57,6 +61,7 @@ from pipeline.verdicts.printed import (
 from pipeline.verdicts.reading import fmt_limit, limit
 
 __all__ = [
+    "DRAW_VERDICTS",
     "NOISE_FREE_AGREES",
     "NUMBER_VERDICTS",
     "RANK_BAND",
@@ -77,6 +82,9 @@ NUMBER_VERDICTS = {
     "approximate": ("reproduced", "not_reproduced", "not_checkable"),
     "statistical": ("consistent", "not_reproduced", "not_checkable"),
 }
+#: The verdicts of an approximate number that is one draw of a noisy run (judged on our Monte
+#: Carlo of it, :mod:`pipeline.verdicts.draws`).
+DRAW_VERDICTS = ("consistent", "not_reproduced", "not_checkable")
 #: Note of a statistical item whose noise-free value equals the published one to within one
 #: unit of its last printed digit.
 NOISE_FREE_AGREES = (
@@ -235,6 +243,10 @@ def _approximate(item: Mapping[str, Any], found: Found) -> Judged:
         f" + 2 SE ({_g(se)}) = +-{fmt_limit(allowed)}{u}" if se else ""
     )
     tolerance += f" ({rule})"
+    if found.samples is not None:
+        from pipeline.verdicts.draws import approximate_draw
+
+        return approximate_draw(item, found, stated, rule)
     if found.value is None:
         return _missing("no reproduced value", item)
     ours = float(found.value)
@@ -376,6 +388,9 @@ def judge(item: Mapping[str, Any], found: Found) -> Judged:
     if found.missing:
         return _missing(found.missing, item)
     judged = _RULES[item["kind"]](item, found)
-    if judged.verdict not in NUMBER_VERDICTS[item["kind"]]:  # pragma: no cover (a rule's bug)
+    allowed = NUMBER_VERDICTS[item["kind"]]
+    if item["kind"] == "approximate" and found.samples is not None:
+        allowed = DRAW_VERDICTS  # one draw of a noisy run (pipeline.verdicts.draws)
+    if judged.verdict not in allowed:  # pragma: no cover (a rule's bug)
         raise AssertionError(f"{item['id']}: verdict {judged.verdict!r} for {item['kind']}")
     return judged

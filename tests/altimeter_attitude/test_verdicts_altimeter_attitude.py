@@ -207,9 +207,9 @@ def test_unpublished_cause_is_shared_and_computed(published, tmp_path):
     # the window moves linear_kf roll by 0.9 - 0.4 = 0.5 deg; the largest of the four
     assert re.search(r"changes our 4 values by 0\.\d\d-0\.50 deg", text), text
     # sweep: linear_kf's flight roll spans 0.45-1.8 (intensity 0.5 and 2); 0.16 lies outside
-    assert "linear_kf roll flight: 0.16 outside [0.45, 1.80] deg" in text
+    assert "linear KF roll flight: 0.16 outside [0.45, 1.80] deg" in text
     # after the bank: 0.4 (50 / rate)^0.5 over 25-100 Hz, [0.28, 0.57]; 0.16 outside
-    assert "linear_kf roll after the first bank: 0.16 outside [0.28, 0.57] deg" in text
+    assert "linear KF roll after the first bank: 0.16 outside [0.28, 0.57] deg" in text
     assert "inside the range our sweep" in text and "in 0 of 8 cases" in text
     assert "no one of these choices moved alone over our range reaches them" in text
     # the sweep's after-bank RMS is s (50 / rate)^0.5: it reaches the published p at 50 (s / p)^2
@@ -218,7 +218,7 @@ def test_unpublished_cause_is_shared_and_computed(published, tmp_path):
     # with the UKF tuning grid (pitch 0.2 at both settings): the paper's 0.1 lies outside
     tuned = judge(published, d, 10.0, tuning=_tuning(tmp_path, (0.18, 0.17)))
     text = tuned[tuned["verdict"] == "not_reproduced"]["cause_detail"].iloc[0]
-    assert "sigma-point settings of ukf_tuning.csv the UKF's RMS over the flight gives" in text
+    assert "sigma-point settings of our UKF tuning grid the UKF's RMS over the flight gives" in text
     assert "pitch 0.1 outside [0.200, 0.200] deg" in text and "roll 0.21 outside" in text
     inside = judge(published, d, 10.0, tuning=_tuning(tmp_path, (0.18, 0.17), pitch=(0.05, 0.2)))
     text = inside[inside["verdict"] == "not_reproduced"]["cause_detail"].iloc[0]
@@ -235,7 +235,7 @@ def test_unpublished_cause_says_when_the_paper_lies_inside_the_sweep(published, 
     frame = judge(published, d, 10.0).set_index("id")
     text = frame.at["V1.lkf_roll/flight", "cause_detail"]
     assert frame.at["V1.lkf_roll/flight", "verdict"] == "not_reproduced"
-    assert "linear_kf roll flight: 0.16 inside [0.15, 0.60] deg" in text, text
+    assert "linear KF roll flight: 0.16 inside [0.15, 0.60] deg" in text, text
     assert "in 1 of 8 cases" in text and "no one of these choices" not in text
 
 
@@ -279,7 +279,7 @@ def test_ranking_is_judged_per_window_with_one_cause(published, tmp_path):
     assert frame.at["C1.linear_beats_ukf/flight", "verdict"] == "not_upheld"
     assert frame.at["C1.linear_beats_ukf/after_bank", "verdict"] == "upheld"
     cause = frame.at["C1.linear_beats_ukf/flight", "cause_detail"]
-    assert "over the flight linear_kf 0.900/0.450 against ukf 0.500/0.250 deg" in cause
+    assert "over the flight linear KF 0.900/0.450 against UKF 0.500/0.250 deg" in cause
     assert "0 for roll (flight)" in cause and "5 for roll (after the first bank)" in cause
 
 
@@ -348,7 +348,7 @@ def test_under_confident_roll_in_level_flight_gets_the_model_cause(published, tm
     assert (rows["verdict"] == "not_upheld").all() and rows["cause_detail"].nunique() == 1
     assert rows["cause_kind"].iloc[0] == "model"
     assert (
-        "linear_kf 100% of 400, ukf 100% of 400 have a true |roll| below 10 deg"
+        "linear KF 100% of 400, UKF 100% of 400 have a true |roll| below 10 deg"
         in (rows["cause_detail"].iloc[0])
     )
 

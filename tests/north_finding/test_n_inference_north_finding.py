@@ -187,14 +187,15 @@ def _fake_frames(cases: dict[str, tuple[str, str, str]], shift: tuple[float, flo
     """A two-point grid (N = 100, 1000) on synthetic trials, through infer_frames: row ``t``
     is standard normal at N = 100 and 0.1 x that at N = 1000; row ``o1`` is standard normal
     shifted by ``shift`` (at N = 100, at N = 1000), so its printed "0.0" sets how much the
-    other rows prefer one N; row ``o2`` is the same at both N (no preference)."""
-    base = np.sort(np.random.default_rng(7).standard_normal(1000))
+    other rows prefer one N; row ``o2`` is the same at both N (no preference). The three rows
+    draw independent normals (uncorrelated rows: each weighs fully in the likelihood)."""
+    base = {k: np.random.default_rng(seed).standard_normal(1000) for k, seed in (("t", 7), ("o1", 8), ("o2", 9))}  # fmt: skip
 
     def run(n: int) -> dict:
         return {
-            ("M", "t"): base * {100: 1.0, 1000: 0.1}[n],
-            ("M", "o1"): base + shift[n == 1000],
-            ("M", "o2"): base,
+            ("M", "t"): base["t"] * {100: 1.0, 1000: 0.1}[n],
+            ("M", "o1"): base["o1"] + shift[n == 1000],
+            ("M", "o2"): base["o2"],
         }
 
     def trials(est: dict) -> pd.DataFrame:
@@ -394,3 +395,34 @@ def test_a_bad_n_inference_block_is_refused_naming_file_field_and_value(
     assert str(path) in message or "bad.yaml" in message
     for needle in needles:
         assert needle in message, message
+
+
+def test_correlated_rows_share_their_vote_in_the_likelihood() -> None:
+    """Rows whose trials are the same (r = 1) count once in all: three copies of one row weigh
+    1/3 each, an uncorrelated row fully, and the profile is what one copy alone gives."""
+    rng = np.random.default_rng(11)
+    same, other = rng.standard_normal(1000), rng.standard_normal(1000)
+
+    def run(n: int) -> dict:
+        scale = {100: 1.0, 1000: 0.1}[n]
+        return {**{("M", f"c{k}"): same * scale for k in range(3)}, ("M", "u"): other * scale}
+
+    def trials(est: dict) -> pd.DataFrame:
+        return pd.concat(
+            [pd.DataFrame({"trial": np.arange(v.size), "method": m, "quantity": q, "truth": 0.0,
+                           "estimate": v, "error_pct": 0.0}) for (m, q), v in est.items()],
+            ignore_index=True,
+        )  # fmt: skip
+
+    def item(q: str) -> dict[str, Any]:
+        return {"id": q, "kind": "statistical", "label": q, "select": {"method": "M"},
+                "quantity": q, "value": "0.5"}  # fmt: skip
+
+    copies = infer_frames(run, trials, [item(f"c{k}") for k in range(3)] + [item("u")], [100, 1000], 0.1)  # fmt: skip
+    one = infer_frames(run, trials, [item("c0"), item("u")], [100, 1000], 0.1)
+    weight = copies["n_rows"].drop_duplicates("id").set_index("id")["row_weight"]
+    assert weight[["c0", "c1", "c2"]].tolist() == pytest.approx([1 / 3] * 3, abs=1e-2)
+    assert weight["u"] == pytest.approx(1.0, abs=1e-2)
+    assert copies["n_profile"]["log_lik"].to_numpy() == pytest.approx(
+        one["n_profile"]["log_lik"].to_numpy(), rel=2e-2
+    )

@@ -201,15 +201,48 @@ ABOUT = {
 }
 
 
+def _l5_bias_trials(mean_error: float, std_error: float, n: int = 1000) -> pd.DataFrame:
+    rng = np.random.default_rng(3)
+    error = mean_error + std_error * rng.standard_normal(n)
+    return pd.DataFrame(
+        {
+            "trial": np.arange(n),
+            "method": "L5",
+            "quantity": "acc_bias_ug",
+            "truth": 100.0,
+            "estimate": 100.0 + error,
+            "error_pct": error,
+        }  # fmt: skip
+    )
+
+
 @pytest.mark.parametrize(
-    ("error", "verdict"), [(-22.6, "reproduced"), (-21.0, "reproduced"), (-26.99, "not_reproduced")]
+    ("mean", "std", "verdict"),
+    [
+        (-26.99, 18.0, "consistent"),  # the paper's noise: 22 % is one draw of it
+        (-26.99, 0.5, "not_reproduced"),  # no noise to speak of: 27 % is not about 22 %
+        (-22.6, 0.5, "consistent"),
+        (-23.5, 0.2, "consistent"),  # 23.5 % is within 'about 22' (+-2.2 %)
+    ],
 )
-def test_about_value_is_the_noise_free_error(error: float, verdict: str) -> None:
-    """The paper's own 22.6 % (Table 3) passes 'about 22 %'; our 26.99 % does not."""
-    res = results(estimates=real_rows({("L5", "acc_bias_ug"): error}, truth=100.0))
+def test_about_value_is_one_draw_of_the_monte_carlo(mean: float, std: float, verdict: str) -> None:
+    """'About 22 %' restates a real-sensor number of the paper's noisy run: it is judged on our
+    Monte Carlo |% error| (its reading interval against the rank band), not on the noise-free
+    error, which the note gives beside it."""
+    res = results(
+        estimates=real_rows({("L5", "acc_bias_ug"): -26.99}, truth=100.0),
+        mc_trials=_l5_bias_trials(mean, std),
+    )
     row = table(res, items=[ABOUT]).loc["S5.acc_bias_error.L5"]
     assert row["kind"] == "approximate" and row["verdict"] == verdict
     assert row["published"] == "22 %" and row["reproduced"].endswith("%")
+    assert "noise-free: 26.99 %" in row["note"] and "main Monte Carlo" in row["note"]
+
+
+def test_about_value_without_monte_carlo_is_not_checkable() -> None:
+    res = results(estimates=real_rows({("L5", "acc_bias_ug"): -26.99}, truth=100.0))
+    row = table(res, items=[ABOUT]).loc["S5.acc_bias_error.L5"]
+    assert row["verdict"] == "not_checkable"
 
 
 def test_statistical_rows_state_their_power_in_percent_error() -> None:

@@ -1,5 +1,8 @@
 """The built reports speak the paper's language: no verdict-row id (``T9.psi.A3``,
-``C2/proposed_simulated``) and no JSON-like value (``{"mode": ...}``) where readers look.
+``C2/proposed_simulated``) and no JSON-like value (``{"mode": ...}``) where readers look, and
+no results file or column name (``ukf_tuning.csv``, ``imu_rate_hz``, ``linear_kf``: every
+results file name and every snake_case string constant of ``pipeline/columns.py`` and
+``pipeline/<slug>/columns.py``) in the cause texts, the prose that says why a row fails.
 
 Row ids may appear only in the dedicated column (:data:`pipeline.report.vocabulary.ROW_ID`) of
 the per-row tables, for cross-reference with verdicts.csv; in the PDF (pdftotext has no table
@@ -10,6 +13,7 @@ files (``reports/*.html``, ``reports/reproduction.pdf``) and the ids of every bu
 
 from __future__ import annotations
 
+import ast
 import re
 import shutil
 import subprocess
@@ -112,6 +116,62 @@ def _offences(text: str, pattern: re.Pattern[str]) -> list[str]:
     out = [f"id {m.group()!r}: ...{text[max(0, m.start() - 60) : m.end() + 20]}..." for m in pattern.finditer(text)]  # fmt: skip
     out += [f"JSON-like: ...{text[max(0, m.start() - 60) : m.end() + 40]}..." for m in JSON_LIKE.finditer(text)]  # fmt: skip
     return out
+
+
+#: a results column (or value) name: snake_case with at least one underscore
+SNAKE = re.compile(r"^[a-z][a-z0-9]*(?:_[a-z0-9]+)+$")
+
+
+def results_names(root: Path = ROOT) -> set[str]:
+    """Every results file name (``*.csv``, ``*.json``) the columns modules mention, every
+    snake_case string constant they define (column names, filter and window tokens) and the
+    sweep's parameter names (the values of its ``parameter`` column)."""
+    from pipeline.altimeter_attitude.sweep import PARAMETERS
+
+    out: set[str] = {p for p in PARAMETERS if SNAKE.match(p)}
+    for path in [root / "pipeline" / "columns.py", *sorted(root.glob("pipeline/*/columns.py"))]:
+        text = path.read_text(encoding="utf-8")
+        out |= set(re.findall(r"\b\w+\.(?:csv|json)\b", text))
+        for node in ast.walk(ast.parse(text)):
+            if isinstance(node, ast.Constant) and isinstance(node.value, str):
+                if SNAKE.match(node.value):
+                    out.add(node.value)
+    return out
+
+
+def name_pattern(names: set[str]) -> re.Pattern[str]:
+    """The names as whole tokens.
+
+    >>> p = name_pattern({"ukf_tuning.csv", "linear_kf"})
+    >>> [m.group() for m in p.finditer("see ukf_tuning.csv: linear_kf, linear_kf_x, linear KF")]
+    ['ukf_tuning.csv', 'linear_kf']
+    """
+    alts = "|".join(re.escape(t) for t in sorted(names, key=len, reverse=True))
+    return re.compile(rf"(?<![\w.]){'(?:' + alts + ')' if alts else '(?!)'}(?![\w])")
+
+
+def test_the_names_scanned_for_include_files_columns_and_tokens():
+    names = results_names()
+    assert {"ukf_tuning.csv", "imu_rate_hz", "linear_kf", "n_profile.csv", "phi_deg"} <= names
+    assert "filter" not in names and "method" not in names  # plain words are not scanned
+
+
+@pytest.mark.parametrize("slug", SLUGS)
+def test_cause_texts_use_reader_words_not_results_names(slug, results_repo):
+    """The cause columns of verdicts.csv are printed as prose in the reports (the failing rows'
+    root causes): they name filters, parameters and files in words."""
+    path = results_repo / "results" / slug / "verdicts.csv"
+    if not path.exists():
+        pytest.skip(f"{path} not built")
+    table = pd.read_csv(path, dtype=str, keep_default_na=False)
+    pattern = name_pattern(results_names())
+    offences = [
+        f"{row_id} {column}: {m.group()!r} in ...{text[max(0, m.start() - 60) : m.end() + 20]}..."
+        for column in ("cause", "cause_detail")
+        for row_id, text in zip(table["id"], table[column], strict=True)
+        for m in pattern.finditer(text)
+    ]
+    assert not offences, f"{path}: {len(offences)} offence(s):\n" + "\n".join(offences[:20])
 
 
 def test_the_scan_finds_ids_and_json_outside_the_row_id_column(tmp_path):
