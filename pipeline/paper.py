@@ -13,7 +13,9 @@ Conventions (for every paper):
 - ``results/<slug>/`` holds the paper's results (``equation_audit.csv``, ``verdicts.csv``,
   ``figures/``, one folder per scenario); ``config/scenarios/<slug>/<name>.yaml`` its
   scenarios; ``config/published/<slug>.yaml`` its published values; ``derivations/<slug>/``
-  its SymPy derivations (``audit.py`` with ``checks()``, ``generate.py`` with ``source()``);
+  its SymPy derivations (``audit.py`` with ``checks()``, ``generate.py`` with ``HEADER``,
+  ``functions()`` and ``source()``), derived once per reproduction into
+  ``results/<slug>/derivation.pkl`` (``derivations.artefact``);
   ``pipeline/generated/<slug>.py`` the generated code; ``notebooks/<slug>.ipynb`` its notebook.
 - A :class:`Step` is one Snakemake rule, ``<slug>_<step name>``; its ``entry`` is called as
   ``entry(inputs, outputs, params, log)`` with the rule's named inputs and outputs (strings or

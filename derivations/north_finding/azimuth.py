@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from derivations.memo import derivation
 from derivations.north_finding import sensors
 from derivations.north_finding.leveling import IDEAL, solve_linear
 from derivations.north_finding.symbols import (
@@ -65,6 +66,7 @@ DEG = sp.pi / 180
 SB = {S: S, b: b}
 
 
+@derivation
 def real_gyro(axis: str, tau_: sp.Expr = tau, still: bool = True) -> sp.Expr:
     """Real gyro on ``axis`` at table angle ``tau_`` (eq. 39 row), noise-free."""
     w_b = sensors.angular_rate_b(tau_)
@@ -73,11 +75,13 @@ def real_gyro(axis: str, tau_: sp.Expr = tau, still: bool = True) -> sp.Expr:
     return sensors.real_reading(w_b, axis)
 
 
+@derivation
 def ideal_gyro(axis: str, tau_: sp.Expr = tau, still: bool = True) -> sp.Expr:
     """Ideal gyro (S = 1, b = 0, no misalignment) on ``axis`` (eqs. 37-38)."""
     return sp.expand(real_gyro(axis, tau_, still).subs(IDEAL))
 
 
+@derivation
 def sinusoid_coeffs(equation: sp.Expr, x: sp.Symbol) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """Write ``equation == 0`` as ``a sin(x) + b cos(x) = c`` and return (a, b, c)."""
     expr = sp.expand(equation)
@@ -89,6 +93,7 @@ def sinusoid_coeffs(equation: sp.Expr, x: sp.Symbol) -> tuple[sp.Expr, sp.Expr, 
     return sp.simplify(a), sp.simplify(bb), sp.simplify(c)
 
 
+@derivation
 def half_angle_roots() -> tuple[sp.Expr, sp.Expr]:
     """Both roots of ``a sin(psi) + b cos(psi) = c`` by the tangent half-angle (eqs. 41, 43).
 
@@ -114,6 +119,7 @@ def phase_roots() -> tuple[sp.Expr, sp.Expr]:
     return delta - sp.acos(cc / r), delta + sp.acos(cc / r)
 
 
+@derivation
 def method1_case1() -> dict[str, sp.Expr]:
     """Method 1, case 1: tau = 0, 180 deg; cos(psi) from the difference (eq. 40)."""
     m0, m180 = ideal_gyro("x", 0), ideal_gyro("x", sp.pi)
@@ -121,6 +127,7 @@ def method1_case1() -> dict[str, sp.Expr]:
     return {"cos_psi": cos_psi}
 
 
+@derivation
 def method1_case2() -> dict[str, sp.Expr]:
     """Method 1, case 2: tau = 90, 270 deg; a sin(psi) + b cos(psi) = c (eqs. 40-41).
 
@@ -132,12 +139,14 @@ def method1_case2() -> dict[str, sp.Expr]:
     return {"a": sp.simplify(a / k), "b": sp.simplify(bb / k), "c": sp.simplify(c / k)}
 
 
+@derivation
 def method2() -> dict[str, sp.Expr]:
     """Method 2: one arbitrary tau; A sin(psi) + B cos(psi) = C (eqs. 42-43)."""
     a, bb, c = sinusoid_coeffs(ideal_gyro("x") - w_tau, psi)
     return {"A": a, "B": bb, "C": c}
 
 
+@derivation
 def method3() -> dict[str, sp.Expr]:
     """Method 3: the largest gyro reading over tau; quartic in cos(psi) (eqs. 44-52).
 
@@ -197,6 +206,7 @@ def method3() -> dict[str, sp.Expr]:
     }
 
 
+@derivation
 def method4() -> dict[str, sp.Expr]:
     """Method 4: gyro bias, azimuth and scale factor from tau = 0, 90, 180 deg (eqs. 53-60)."""
     m = {d: real_gyro("x", d * DEG).subs({**IDEAL, **SB}) for d in (0, 90, 180)}
@@ -218,6 +228,7 @@ def method4() -> dict[str, sp.Expr]:
     return {"bias": bias, "omega1": omega1, "omega2": omega2, **coeffs, "scale": scale}
 
 
+@derivation
 def method5() -> dict[str, sp.Expr]:
     """Method 5: eliminate psi with cos^2 + sin^2 = 1; quadratic in S (eqs. 61-67)."""
     m4 = method4()
@@ -267,6 +278,7 @@ def method5() -> dict[str, sp.Expr]:
     }
 
 
+@derivation
 def method6() -> dict[str, sp.Expr]:
     """Method 6: gyro turned into z; S from the norm of three components (eqs. 68-71)."""
     m4 = method4()

@@ -6,6 +6,7 @@ table positions, forming the paper's combination of readings, and solving for
 the unknown. Nothing here is copied from the paper; the audit compares.
 
 >>> import sympy as sp
+
 >>> from derivations.north_finding.symbols import ax_0, ax_180, g
 >>> method1()["sin_theta"]
 (ax_0 - ax_180)/(2*g)
@@ -15,6 +16,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from derivations.memo import derivation
 from derivations.north_finding import sensors
 from derivations.north_finding.symbols import (
     S,
@@ -62,6 +64,7 @@ DEG = sp.pi / 180
 IDEAL = {S: 1, b: 0, **{ma: 0 for row in sensors.MISALIGNMENT.values() for ma in row.values()}}
 
 
+@derivation
 def real_accel(axis: str, tau_: sp.Expr = tau, still: bool = True) -> sp.Expr:
     """Real accelerometer on ``axis`` at table angle ``tau_`` (eq. 18 row), noise-free."""
     f_b = sensors.specific_force_b(tau_)
@@ -70,6 +73,7 @@ def real_accel(axis: str, tau_: sp.Expr = tau, still: bool = True) -> sp.Expr:
     return sensors.real_reading(f_b, axis)
 
 
+@derivation
 def ideal_accel(axis: str, tau_: sp.Expr = tau, still: bool = True) -> sp.Expr:
     """Ideal accelerometer (S = 1, b = 0, no misalignment) on ``axis`` (eqs. 17, 23, 24)."""
     return sp.expand(real_accel(axis, tau_, still).subs(IDEAL))
@@ -104,6 +108,7 @@ def design_row(reading: sp.Expr, unknowns: dict[sp.Expr, sp.Symbol]) -> list[sp.
     return [sp.simplify(c) for c in row]
 
 
+@derivation
 def method1() -> dict[str, sp.Expr]:
     """Method 1: x channel at tau = 0, 90, 180, 270 deg (eq. 19).
 
@@ -117,6 +122,7 @@ def method1() -> dict[str, sp.Expr]:
     return {"sin_theta": sin_theta, "sin_phi": sin_phi}
 
 
+@derivation
 def method2() -> dict[str, sp.Expr]:
     """Method 2: x channel at n arbitrary tau, least squares (eqs. 20-21).
 
@@ -129,6 +135,7 @@ def method2() -> dict[str, sp.Expr]:
     return {"h_sin_theta": row[0], "h_cth_sphi": row[1], "sin_phi": sin_phi}
 
 
+@derivation
 def method3() -> dict[str, sp.Expr]:
     """Method 3: y channel at tau = 0, 90, 180, 270 deg on the turning table (eq. 24).
 
@@ -141,6 +148,7 @@ def method3() -> dict[str, sp.Expr]:
     return {"sin_theta": sin_theta, "sin_phi": sin_phi}
 
 
+@derivation
 def method4() -> dict[str, sp.Expr]:
     """Method 4: y channel at n arbitrary tau, least squares (eqs. 25-26, omega_dot ~ 0).
 
@@ -151,6 +159,7 @@ def method4() -> dict[str, sp.Expr]:
     return {"h_cth_sphi": row[0], "h_sin_theta": row[1]}
 
 
+@derivation
 def method5() -> dict[str, sp.Expr]:
     """Method 5: accelerometer bias and scale factor (eqs. 27-34).
 

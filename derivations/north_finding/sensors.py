@@ -33,6 +33,7 @@ import functools
 import sympy as sp
 
 from derivations import frames
+from derivations.memo import derivation
 from derivations.north_finding.symbols import (
     MA_xy,
     MA_xz,
@@ -86,11 +87,13 @@ def mat_bn(tau_: sp.Expr = tau) -> sp.Matrix:
     return mat_bt(tau_) * frames.mat_tn(psi, theta, phi)
 
 
+@derivation
 def gravity_b(tau_: sp.Expr = tau) -> sp.Matrix:
     """``[T]^{BT}[T]^{TN}[g]^N``, the gravity vector in B (eq. 16)."""
     return mat_bn(tau_) * frames.gravity_n(g)
 
 
+@derivation
 def earth_rate_b(tau_: sp.Expr = tau) -> sp.Matrix:
     """``[T]^{BT}[T]^{TN}[omega^{EI}]^N = Omega [a_x, a_y, a_z]^T`` (eq. 36)."""
     return mat_bn(tau_) * frames.earth_rate_n(Omega, lam)
@@ -114,6 +117,7 @@ def _table_kinematics() -> tuple[sp.Matrix, sp.Matrix]:
     return v_b, a_b
 
 
+@derivation
 def coriolis_b(tau_: sp.Expr = tau) -> sp.Matrix:
     """``2 [Omega^{EI}]^B [v_B^T]^B = [p_x, p_y, p_z]^T`` (eq. 22).
 
@@ -124,6 +128,7 @@ def coriolis_b(tau_: sp.Expr = tau) -> sp.Matrix:
     return 2 * frames.skew(earth_rate_b(tau_)) * v_b.subs(tau, tau_)
 
 
+@derivation
 def specific_force_b(tau_: sp.Expr = tau) -> sp.Matrix:
     """``[f]^B`` of the sensor on the rotating table (eqs. 16, 23 and the a_y, a_z lines of 24).
 
@@ -134,6 +139,7 @@ def specific_force_b(tau_: sp.Expr = tau) -> sp.Matrix:
     return sp.expand(a_b.subs(tau, tau_) + coriolis_b(tau_) - gravity_b(tau_))
 
 
+@derivation
 def table_rate_b(tau_: sp.Expr = tau) -> sp.Matrix:
     """``[T]^{BT}[omega^{BT}]^T = [0, 0, omega]^T`` (eq. 35), from Poisson's equation."""
     tau_t = sp.Function("tau")(t)
@@ -141,6 +147,7 @@ def table_rate_b(tau_: sp.Expr = tau) -> sp.Matrix:
     return sp.simplify(w_b.subs(tau_t.diff(t), w).subs(tau_t, tau_))
 
 
+@derivation
 def angular_rate_b(tau_: sp.Expr = tau) -> sp.Matrix:
     """``[omega^{BI}]^B = [omega^{BT}]^B + [T]^{BT}[T]^{TN}[omega^{EI}]^N`` (eqs. 14, 37)."""
     return table_rate_b(tau_) + earth_rate_b(tau_)

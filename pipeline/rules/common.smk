@@ -127,12 +127,18 @@ def paper_targets(slug):
 
 
 def derive_code(step):
-    """Input function: the code a derive step of one paper runs (its import graph)."""
+    """Input function: the code a derive step of one paper runs (its import graph). The derive
+    rule runs the paper's audit checks and generators; the audit and the codegen check read
+    its artefact and run only the comparison code their scripts import."""
     modules = {
-        "audit": lambda paper: code(paper.audit_module, script="equation_audit.py"),
-        "codegen": lambda paper: code(
-            paper.generator_module, "derivations.generate_frames", script="codegen_check.py"
+        "derive": lambda paper: code(
+            paper.audit_module,
+            paper.generator_module,
+            "derivations.generate_frames",
+            script="derive.py",
         ),
+        "audit": lambda paper: code(script="equation_audit.py"),
+        "codegen": lambda paper: code(script="codegen_check.py"),
     }[step]
     return lambda wildcards: modules(PAPERS[wildcards.paper])
 

@@ -1,10 +1,30 @@
-# Per paper ({paper} wildcard): the SymPy derivations checked against the printed equations
-# (equation audit) and against the committed generated code (codegen check).
+# Per paper ({paper} wildcard): the SymPy derivations, computed once and pickled (derive), then
+# checked against the printed equations (equation audit) and against the committed generated
+# code (codegen check), both from that one artefact; and the executed notebook.
+
+
+rule derive:
+    input:
+        code=derive_code("derive"),
+    output:
+        kept(f"{RESULTS}/{{paper}}/derivation.pkl"),
+    log:
+        f"{RESULTS}/{{paper}}/logs/derive.log",
+    benchmark:
+        f"{RESULTS}/{{paper}}/benchmarks/derive.tsv"
+    conda:
+        ENV
+    params:
+        audit=lambda wildcards: PAPERS[wildcards.paper].audit_module,
+        generator=lambda wildcards: PAPERS[wildcards.paper].generator_module,
+    script:
+        "../scripts/derive.py"
 
 
 rule codegen_check:
     input:
         code=derive_code("codegen"),
+        derivation=rules.derive.output[0],
         generated="pipeline/generated/{paper}.py",
         frames="pipeline/generated/frames.py",
     output:
@@ -15,8 +35,6 @@ rule codegen_check:
         f"{RESULTS}/{{paper}}/benchmarks/codegen_check.tsv"
     conda:
         ENV
-    params:
-        generator=lambda wildcards: PAPERS[wildcards.paper].generator_module,
     script:
         "../scripts/codegen_check.py"
 
@@ -24,6 +42,7 @@ rule codegen_check:
 rule audit:
     input:
         code=derive_code("audit"),
+        derivation=rules.derive.output[0],
     output:
         csv=report(
             kept(f"{RESULTS}/{{paper}}/equation_audit.csv"),
@@ -38,8 +57,6 @@ rule audit:
         f"{RESULTS}/{{paper}}/benchmarks/audit.tsv"
     conda:
         ENV
-    params:
-        audit=lambda wildcards: PAPERS[wildcards.paper].audit_module,
     script:
         "../scripts/equation_audit.py"
 

@@ -1,23 +1,25 @@
 # Snakemake script: fail if a generated module differs from what its derivations generate: the
-# paper's (params.generator: derivations.<slug>.generate, with source()) and the shared frames
-# module every paper calls (derivations.generate_frames).
-import importlib
+# paper's (input.generated) and the shared frames module every paper calls (input.frames), each
+# rendered from the functions in the paper's derivation artefact (input.derivation, written by
+# the derive rule from derivations.<slug>.generate and derivations.generate_frames).
 from pathlib import Path
 
+from derivations.artefact import load
+from derivations.codegen import render_module
 from pipeline.atomic import write_text
 from pipeline.script_log import logged
 
 with logged(snakemake.log[0], written=snakemake.output):  # noqa: F821
-    pairs = [
-        (importlib.import_module(snakemake.params.generator), snakemake.input.generated),  # noqa: F821
-        (importlib.import_module("derivations.generate_frames"), snakemake.input.frames),  # noqa: F821
-    ]
+    modules = load(snakemake.input.derivation)["modules"]  # noqa: F821
+    paths = [snakemake.input.generated, snakemake.input.frames]  # noqa: F821
     lines = []
-    for generator, path in pairs:
+    for module, path in zip(modules, paths, strict=True):
         generated = Path(path)
-        if generated.read_text(encoding="utf-8") != generator.source():
+        if generated.read_text(encoding="utf-8") != render_module(
+            module["functions"], module["header"]
+        ):
             raise SystemExit(
-                f"{generated} is stale: run `python -m {generator.__name__}` and commit it"
+                f"{generated} is stale: run `python -m {module['generator']}` and commit it"
             )
         lines.append(f"{generated} is fresh\n")
     write_text(snakemake.output[0], "".join(lines))  # noqa: F821

@@ -168,12 +168,12 @@ def _job_counts(output: str) -> dict[str, int]:
 @pytest.mark.workflow
 def test_dry_run_plans_every_step_of_every_paper():
     """``snakemake -n --forceall`` plans, per paper, one job per step (per scenario for a
-    per-scenario step) and the shared audit, codegen check and notebook once per paper."""
+    per-scenario step) and the shared derive, audit, codegen check and notebook once per paper."""
     r = snakemake("-n", "--cores", "1", "--forceall", "--nolock", cwd=ROOT, timeout=HANG_GUARD_S)
     assert r.returncode == 0, r.stderr[-3000:]
     counts = _job_counts(r.stdout + r.stderr)
     papers = load_papers(CONFIG["papers"])
-    for shared in ("audit", "codegen_check", "notebook"):
+    for shared in ("derive", "audit", "codegen_check", "notebook"):
         assert counts[shared] == len(papers), (shared, counts)
     for slug, paper in papers.items():
         ctx = context(paper, CONFIG)
@@ -198,7 +198,7 @@ def test_one_paper_in_config_plans_only_that_paper(tmp_path):
     others = [o for o in SLUGS if o != slug]
     assert not [rule for rule in counts if any(rule.startswith(o) for o in others)], counts
     assert set(re.findall(r"paper=(\w+)", out)) == {slug}
-    assert counts["audit"] == counts["codegen_check"] == counts["notebook"] == 1
+    assert counts["derive"] == counts["audit"] == counts["codegen_check"] == counts["notebook"] == 1
     assert counts["reproduction_html"] == 1
 
 

@@ -1,0 +1,89 @@
+"""The derivation artefact (derivations.artefact): what the derive rule pickles round-trips to
+the same checks and the same generated source, its bytes do not depend on the process, and a
+file that is not an artefact stops the reader with one line naming the file."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+import pytest
+import sympy as sp
+
+from derivations import artefact, generate_frames
+from derivations.checks import Check, run_check
+from derivations.codegen import render_module
+from pipeline.registry import ROOT
+
+_SCRIPT = """
+import sys
+import sympy as sp
+from derivations import artefact, generate_frames
+from derivations.checks import Check
+x = sp.Symbol("x", real=True)
+checks = [Check("1", printed=sp.Matrix([sp.sin(x) ** 2]), derived=sp.Matrix([1 - sp.cos(x) ** 2]))]
+modules = [{"generator": "derivations.generate_frames", "header": generate_frames.HEADER,
+            "functions": generate_frames.functions()}]
+sys.stdout.buffer.write(artefact.dumps({"audit_module": "a", "generator_module": "g",
+                                        "checks": checks, "modules": modules}))
+"""
+
+
+def _frames_artefact() -> dict:
+    x = sp.Symbol("x", real=True)
+    return {
+        "audit_module": "a",
+        "generator_module": "g",
+        "checks": [
+            Check(
+                "1", printed=sp.Matrix([sp.sin(x) ** 2]), derived=sp.Matrix([1 - sp.cos(x) ** 2])
+            ),
+            Check("2", printed=2 * x, derived=3 * x, discrepancy="wrong_term", if_differs="typo"),
+        ],
+        "modules": [
+            {
+                "generator": "derivations.generate_frames",
+                "header": generate_frames.HEADER,
+                "functions": generate_frames.functions(),
+            }
+        ],
+    }
+
+
+def test_round_trip_keeps_checks_and_generated_source(tmp_path):
+    built = _frames_artefact()
+    path = tmp_path / "derivation.pkl"
+    path.write_bytes(artefact.dumps(built))
+    loaded = artefact.load(path)
+    assert [run_check(c) for c in loaded["checks"]] == [run_check(c) for c in built["checks"]]
+    assert [run_check(c).residual for c in loaded["checks"]] == ["0", "-x"]
+    module = loaded["modules"][0]
+    assert render_module(module["functions"], module["header"]) == generate_frames.source()
+
+
+def test_bytes_are_the_same_in_two_processes():
+    env = {**os.environ, "PYTHONHASHSEED": "0", "PYTHONPATH": str(ROOT)}
+    runs = [
+        subprocess.run(
+            [sys.executable, "-c", _SCRIPT], cwd=ROOT, env=env, capture_output=True, check=True
+        ).stdout
+        for _ in range(2)
+    ]
+    assert runs[0] == runs[1] and len(runs[0]) > 1000
+
+
+@pytest.mark.parametrize(
+    "content, says",
+    [
+        (b"not a pickle", "not a readable derivation artefact"),
+        (artefact.pickle.dumps({"checks": []}), "keys"),
+    ],
+)
+def test_a_file_that_is_not_an_artefact_is_refused_in_one_line(tmp_path, content, says):
+    path = tmp_path / "derivation.pkl"
+    path.write_bytes(content)
+    with pytest.raises(SystemExit) as info:
+        artefact.load(path)
+    message = str(info.value)
+    assert str(path) in message and says in message and "\n" not in message
