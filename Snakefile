@@ -9,6 +9,21 @@
 #   everything  --report-->   reports/reproduction.html|pdf             (report.smk)
 
 
+# config/config.yaml read strictly first: Snakemake's own reader (the `configfile:` directive)
+# reports binary bytes, unknown tags, tabs or an empty file with its stack frames
+import sys
+
+sys.path.insert(0, workflow.basedir)
+from pipeline.config import ConfigError  # noqa: E402
+from pipeline.registry import check_config_file  # noqa: E402
+
+try:
+    check_config_file(f"{workflow.basedir}/config/config.yaml")
+except ConfigError as _error:
+    sys.stderr.write(f"{_error}\n")
+    raise SystemExit(1) from None
+
+
 configfile: "config/config.yaml"
 
 

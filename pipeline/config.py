@@ -115,6 +115,30 @@ def check_values(data: Any, source: str | Path, finite: bool = True) -> None:
         raise ConfigError("\n".join(sorted(problems)))
 
 
+def yaml_problem(exc: yaml.YAMLError, source: str | Path) -> str:
+    """One line for a YAML error: the file, the line and column, the problem and what is
+    allowed (an unknown tag: YAML's standard tags only).
+
+    >>> load_text("a: !!python/object/apply:os.system ['true']", "x.yaml")
+    Traceback (most recent call last):
+    ...
+    pipeline.config.ConfigError: x.yaml: line 1, column 4: tag 'tag:yaml.org,2002:python/object/apply:os.system': not allowed; allowed: YAML's standard tags only (plain values, lists and mappings; no !!python/... or custom tags)
+    """
+    mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
+    where = f"line {mark.line + 1}, column {mark.column + 1}: " if mark is not None else ""
+    problem = str(getattr(exc, "problem", None) or exc).splitlines()[0]
+    if isinstance(exc, yaml.constructor.ConstructorError) and "constructor for the tag" in problem:
+        tag = problem.rsplit(" ", 1)[-1]
+        return (
+            f"{source}: {where}tag {tag}: not allowed; allowed: YAML's standard tags only "
+            "(plain values, lists and mappings; no !!python/... or custom tags)"
+        )
+    hint = " (indent with spaces, not tabs)" if "'\\t'" in problem else ""
+    return (
+        f"{source}: {where}not valid YAML: {problem[:MAX_QUOTED]}; allowed: a YAML document{hint}"
+    )
+
+
 def load_text(text: str, source: str | Path, finite: bool = True) -> Any:
     """Parse YAML ``text`` read from ``source`` strictly (see the module docstring);
     ``finite=False`` leaves non-finite numbers to a caller that names them better."""
@@ -125,7 +149,7 @@ def load_text(text: str, source: str | Path, finite: bool = True) -> Any:
     except ConfigError:
         raise
     except yaml.YAMLError as exc:
-        raise ConfigError(f"{source}: not valid YAML: {exc}") from None
+        raise ConfigError(yaml_problem(exc, source)) from None
     except RecursionError:
         raise ConfigError(
             f"{source}: nested too deeply; allowed: a plain config document"

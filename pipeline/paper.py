@@ -265,11 +265,13 @@ class Paper:
     def figure_files(self) -> list[str]:
         return [f.file for f in self.figures]
 
-    def check_published(self, path: str | Path) -> None:
-        """Validate the published file with :attr:`load_published` (nothing if empty)."""
+    def check_published(self, path: str | Path) -> Any:
+        """Validate the published file with :attr:`load_published` (nothing if empty); the
+        parsed file (None if not validated)."""
         if self.load_published:
             module, _, name = self.load_published.partition(":")
-            getattr(importlib.import_module(module), name)(path)
+            return getattr(importlib.import_module(module), name)(path)
+        return None
 
     def report_function(self) -> Callable[[Any], Any]:
         """The function ``report`` names (a function returning no sections if none)."""

@@ -17,12 +17,21 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
-from pipeline.config import ConfigError, inside_repository, load_schema, load_yaml, validate
+from pipeline.config import (
+    ConfigError,
+    inside_repository,
+    load_schema,
+    load_yaml,
+    quoted,
+    validate,
+)
 from pipeline.paper import SLUG_PATTERN, Context, Paper
 from pipeline.scenarios import scenario_names
 
 __all__ = [
     "ROOT",
+    "check_config_file",
+    "check_workflow",
     "context",
     "load_paper",
     "load_papers",
@@ -32,6 +41,21 @@ __all__ = [
 ]
 
 ROOT = Path(__file__).resolve().parents[1]
+
+
+def check_config_file(path: str | Path) -> dict[str, Any]:
+    """A workflow config file read strictly (see :func:`pipeline.config.load_yaml`: binary
+    bytes, tags, duplicate keys, NaN, alias bombs) and checked to be a mapping: the Snakefile
+    calls it before its ``configfile:`` directive, whose reader would otherwise fail first with
+    Snakemake's stack frames."""
+    data = load_yaml(path)
+    if not isinstance(data, dict):
+        shown = "empty" if data is None else f"a {type(data).__name__}"
+        raise ConfigError(
+            f"{path}: (top level) = {shown}: allowed: a mapping with keys papers, results_dir, "
+            "reports_dir and the papers' settings"
+        )
+    return data
 
 
 def validate_workflow_config(
@@ -98,8 +122,17 @@ def context(
         if settings is None:
             raise ConfigError(f"{source}: {paper.slug}: missing (the paper's settings)")
         validate(settings, load_schema(paper.settings_schema), f"{source}: {paper.slug}")
+        chosen = settings.get("published_scenario")
+        if chosen is not None and chosen not in scenarios:
+            raise ConfigError(
+                f"{source}: {paper.slug}.published_scenario = {chosen!r}: not a scenario of "
+                f"config/scenarios/{paper.slug}/; allowed: one of {list(scenarios)}"
+            )
     elif settings is not None:
-        raise ConfigError(f"{source}: {paper.slug}: this paper takes no settings")
+        raise ConfigError(
+            f"{source}: {paper.slug} = {quoted(settings)}: this paper takes no settings; "
+            f"allowed: no {paper.slug} key"
+        )
     return Context(
         slug=paper.slug,
         results_dir=str(config.get("results_dir", "results")),
@@ -112,7 +145,13 @@ def context(
 def validate_published(paper: Paper, ctx: Context, root: Path = ROOT) -> None:
     """The paper's published file validated when the workflow is parsed (its ConfigError names
     the file, the field, the value and what is allowed), before any job."""
-    paper.check_published(root / ctx.published)
+    path = root / ctx.published
+    data = paper.check_published(path)
+    if isinstance(data, dict) and data.get("paper") != paper.slug:
+        raise ConfigError(
+            f"{path}: field 'paper' = {data.get('paper')!r}: allowed: {paper.slug!r} (the paper "
+            "whose published values the file holds)"
+        )
 
 
 def validate_scenarios(paper: Paper, names: Sequence[str], directory: str | Path) -> None:
@@ -120,3 +159,19 @@ def validate_scenarios(paper: Paper, names: Sequence[str], directory: str | Path
     bad file raises its ConfigError (naming the file), before any job runs."""
     for name in names:
         paper.load_scenario(Path(directory) / f"{name}.yaml")
+
+
+def check_workflow(
+    config: Mapping[str, Any], configfiles: Sequence[str | Path], root: Path = ROOT
+) -> tuple[dict[str, Paper], dict[str, Context]]:
+    """Everything the workflow checks when it is parsed (pipeline/rules/common.smk calls this),
+    in its order: the workflow config, the plug-ins it lists, each paper's settings and scenario
+    file names, every scenario file and the published file. Returns the papers and their
+    contexts; the first problem raises its ConfigError, before any job."""
+    validate_workflow_config(config, configfiles, root)
+    papers = load_papers(config["papers"], root)
+    contexts = {slug: context(paper, config, root) for slug, paper in papers.items()}
+    for slug, paper in papers.items():
+        validate_scenarios(paper, contexts[slug].scenarios, root / contexts[slug].scenarios_dir)
+        validate_published(paper, contexts[slug], root)
+    return papers, contexts

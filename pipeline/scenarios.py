@@ -45,9 +45,19 @@ def scenario_names(directory: str | Path) -> list[str]:
 def decisions_with_values(raw: dict[str, Any], path: str | Path) -> list[dict[str, Any]]:
     """A scenario's ``decisions`` (field, text), each with the value found at its field;
     ConfigError (naming the file) if a decision names a field the scenario does not have."""
-    from pipeline.config import dotted_get
+    from pipeline.config import ConfigError, dotted_get
 
-    return [{**d, "value": dotted_get(raw, d["field"], path)} for d in raw.get("decisions", [])]
+    out = []
+    for index, decision in enumerate(raw.get("decisions", [])):
+        try:
+            out.append({**decision, "value": dotted_get(raw, decision["field"], path)})
+        except ConfigError as exc:
+            raise ConfigError(
+                f"{path}: decisions.{index}.field = {decision['field']!r}: not a field of this "
+                f"scenario ({str(exc).rsplit('(', 1)[-1].rstrip(')')}); allowed: the dotted path "
+                "of one of its fields, e.g. 'site.lat_deg'"
+            ) from None
+    return out
 
 
 def whole_multiple(value: float, step: float) -> bool:

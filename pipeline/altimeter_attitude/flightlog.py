@@ -71,7 +71,6 @@ import pandas as pd
 from pipeline.altimeter_attitude import complementary, euler_filters, linear_kf
 from pipeline.altimeter_attitude.columns import FLIGHTLOG_OUTPUT_COLUMNS
 from pipeline.altimeter_attitude.estimates import Estimates
-from pipeline.altimeter_attitude.flightlog_args import Parser, option, out_problem
 from pipeline.altimeter_attitude.flightlog_format import (
     STAMPS,
     FlightLog,
@@ -83,6 +82,7 @@ from pipeline.altimeter_attitude.flightlog_format import (
 from pipeline.altimeter_attitude.gravity import normal_gravity
 from pipeline.altimeter_attitude.sensors import InitialSpec, Inputs, SensorSpec
 from pipeline.atomic import write_csv
+from pipeline.cli_args import Parser, option, out_problem
 from pipeline.generated import altimeter_attitude as gen
 
 __all__ = ["FlightLogError", "FlightLog", "read_log", "run_log", "main", "FILTERS", "DEFAULTS"]

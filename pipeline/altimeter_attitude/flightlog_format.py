@@ -32,7 +32,6 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
-import yaml
 
 __all__ = [
     "QUANTITIES",
@@ -124,12 +123,13 @@ def parse_columns(text: str, where: str = "--columns") -> dict[str, tuple[str, s
 
 def load_format(path: str | Path) -> tuple[dict[str, tuple[str, str | None]], str | None]:
     """A YAML/JSON format file -> (column map, stamp or None)."""
+    from pipeline.config import ConfigError, load_yaml
+
     path = Path(path)
-    try:
-        raw = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, yaml.YAMLError) as exc:
-        first = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
-        raise FlightLogError(f"{path}: cannot read the format file: {first}") from None
+    try:  # read strictly: binary bytes, tags, duplicate keys, NaN, alias bombs
+        raw = load_yaml(path)
+    except ConfigError as exc:
+        raise FlightLogError(f"--format: {exc}") from None
     if not isinstance(raw, dict) or not set(raw) <= {"columns", "stamp"}:
         raise FlightLogError(f"{path}: a format file is a mapping with keys columns and stamp")
     stamp = raw.get("stamp")
@@ -150,6 +150,13 @@ def load_format(path: str | Path) -> tuple[dict[str, tuple[str, str | None]], st
             )
         _entry(out, quantity, column, unit, str(path))
     return out, stamp
+
+
+#: |value| (SI) a sensor column may hold, and how the allowed range is shown
+SENSOR_RANGE = {
+    "gyro": (2000.0 * np.pi / 180.0, "34.9 rad/s (2000 deg/s)"),
+    "accel": (50 * 9.80665, "490 m/s^2 (50 g)"),
+}
 
 
 @dataclass(frozen=True)
@@ -226,7 +233,19 @@ def read_log(path: str | Path, columns: dict | None = None, max_jitter: float = 
     """Parse and check a flight log (``columns`` from :func:`parse_columns`)."""
     path = Path(path)
     try:
-        frame = pd.read_csv(path)
+        data = path.read_bytes()
+        data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise FlightLogError(
+            f"{path}: byte {exc.start} = {data[exc.start : exc.start + 1]!r}: not UTF-8 text; "
+            "allowed: a UTF-8 (or ASCII) CSV file"
+        ) from None
+    except OSError as exc:
+        raise FlightLogError(
+            f"{path}: cannot read: {exc.strerror or exc}; allowed: a flight-log CSV file"
+        ) from None
+    try:  # every cell as text: 'nan' is named as written, an empty cell as empty
+        frame = pd.read_csv(path, dtype=str, keep_default_na=False, skipinitialspace=True)
     except pd.errors.EmptyDataError:
         raise FlightLogError(f"{path}: the file is empty; need a header and IMU rows") from None
     except (OSError, pd.errors.ParserError, UnicodeDecodeError) as exc:
@@ -237,25 +256,34 @@ def read_log(path: str | Path, columns: dict | None = None, max_jitter: float = 
         raise FlightLogError(f"{path}: {len(frame)} rows; need at least 3 IMU samples")
     si = {}
     for q, (col, unit) in used.items():
-        values = pd.to_numeric(frame[col], errors="coerce").to_numpy(dtype=float)
+        cells = frame[col].str.strip()
+        values = pd.to_numeric(cells.mask(cells == ""), errors="coerce").to_numpy(dtype=float)
         bad = ~np.isfinite(values)
         if q == "altimeter":
-            bad &= frame[col].notna().to_numpy()
+            bad &= (cells != "").to_numpy()
         if bad.any():
             i = int(np.flatnonzero(bad)[0])
             hint = " (leave it empty where there is no sample)" if q == "altimeter" else ""
             raise FlightLogError(
-                f"{path}: column {col} ({q}), data row {i + 1}: {_cell(frame[col].iloc[i])} is "
-                f"not a finite number{hint}"
+                f"{path}: column {col} ({q}), data row {i + 1}: {_cell(cells.iloc[i] or None)} "
+                f"is not a finite number{hint}"
             )
         si[q] = values * UNITS[_kind(q)][unit]
+        limit = SENSOR_RANGE.get(_kind(q))
+        if limit is not None and np.any(np.abs(si[q]) > limit[0]):
+            i = int(np.flatnonzero(np.abs(si[q]) > limit[0])[0])
+            raise FlightLogError(
+                f"{path}: column {col} ({q}), data row {i + 1}: {values[i]:g} {unit}: allowed "
+                f"|{q}| <= {limit[1]} (an IMU's range; check the unit)"
+            )
     t_col = used["t"][0]
     t = si["t"]
     steps = np.diff(t)
     if np.any(steps <= 0):
         rows = np.flatnonzero(steps <= 0) + 1
         raise FlightLogError(
-            f"{path}: column {t_col} must increase strictly; data rows {_rows(rows)} do not"
+            f"{path}: column {t_col} must be strictly increasing; data rows "
+            f"{_rows(rows, t[rows], ' s')} are not after the row before"
         )
     dt = float(np.median(steps))
     dev = np.abs(steps - dt) / dt

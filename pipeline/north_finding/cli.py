@@ -41,6 +41,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.atomic import write_atomic, write_csv
+from pipeline.cli_args import Parser, count, number, out_problem
 from pipeline.config import ConfigError
 from pipeline.north_finding import columns as col
 from pipeline.north_finding import readings as rd
@@ -51,6 +52,11 @@ from pipeline.north_finding.scenario import build_scenario, load_scenario
 __all__ = ["main"]
 
 ALL = ["L1", "L2", "L3", "L4", "L5", "A1c1", "A1c2", "A2", "A3", "A4", "A5", "A6"]
+#: the bounds of the scenario schema (config/schemas/north_finding_scenario.schema.json)
+G_RANGE = (9.7, 9.9)
+MAX_OMEGA_IE = 1e-4
+#: the largest --trial (monte_carlo.n_trials is at most this)
+MAX_TRIAL = 1_000_000
 
 
 def _estimate(args: argparse.Namespace) -> int:
@@ -78,7 +84,15 @@ def _estimate(args: argparse.Namespace) -> int:
 def _simulate_readings(args: argparse.Namespace) -> int:
     sc = load_scenario(args.scenario)
     if sc.kind != "simulated":
-        raise ConfigError(f"{args.scenario}: type must be 'simulated' to simulate readings")
+        raise ConfigError(
+            f"{args.scenario}: type = {sc.kind!r}: allowed: 'simulated' (simulate-readings "
+            "draws the noise of a simulated scenario)"
+        )
+    if args.trial >= sc.n_trials:
+        raise ConfigError(
+            f"--trial = {args.trial}: allowed: 0 <= trial < {sc.n_trials} (monte_carlo.n_trials "
+            f"of {args.scenario})"
+        )
     tau, axis, _ = rd.simulation_positions(sc)
     normals = rd.standard_normals(sc.seed, scenario_key(sc.name), args.trial + 1, tau.size)[
         args.trial :
@@ -108,8 +122,8 @@ def _simulate_readings(args: argparse.Namespace) -> int:
     return 0
 
 
-def main(argv: list[str] | None = None, prog: str | None = None) -> int:
-    parser = argparse.ArgumentParser(
+def _parser(prog: str | None) -> tuple[argparse.ArgumentParser, dict[str, argparse.ArgumentParser]]:
+    parser = Parser(
         prog=prog or "python -m pipeline.north_finding.cli",
         description=f"{__doc__}\n{rd.format_help()}",
         formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -122,10 +136,30 @@ def main(argv: list[str] | None = None, prog: str | None = None) -> int:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     e.add_argument("--readings", required=True, help="readings CSV")
-    e.add_argument("--lat-deg", required=True, type=float, help="geodetic latitude, deg (-90, 90)")
-    e.add_argument("--g", required=True, type=float, help="local gravity, m/s^2 (> 0)")
-    e.add_argument("--omega-ie", type=float, default=7.292115e-5, help="Earth rate, rad/s")
-    e.add_argument("--compass-deg", required=True, type=float, help="coarse heading, deg")
+    e.add_argument(
+        "--lat-deg",
+        required=True,
+        type=number("--lat-deg", -90, 90, True, True),
+        help="geodetic latitude, deg (-90, 90)",
+    )
+    e.add_argument(
+        "--g",
+        required=True,
+        type=number("--g", *G_RANGE),
+        help=f"local gravity, m/s^2 [{G_RANGE[0]:g}, {G_RANGE[1]:g}]",
+    )
+    e.add_argument(
+        "--omega-ie",
+        type=number("--omega-ie", 0, MAX_OMEGA_IE, True),
+        default=7.292115e-5,
+        help=f"Earth rate, rad/s (0, {MAX_OMEGA_IE:g}] (default %(default)s)",
+    )
+    e.add_argument(
+        "--compass-deg",
+        required=True,
+        type=number("--compass-deg", -180, 360),
+        help="coarse heading, deg [-180, 360]",
+    )
     e.add_argument(
         "--level-source",
         default="L1",
@@ -133,27 +167,64 @@ def main(argv: list[str] | None = None, prog: str | None = None) -> int:
         help="levelling method whose roll and pitch feed the azimuth methods",
     )
     e.add_argument(
-        "--a2-tau-deg", type=float, default=45.0, help="table angle of azimuth method 2, deg"
+        "--a2-tau-deg",
+        type=number("--a2-tau-deg", 0, 360, hi_open=True),
+        default=45.0,
+        help="table angle of azimuth method 2, deg [0, 360)",
     )
     e.add_argument(
         "--a3-accuracy-deg",
-        type=float,
+        type=number("--a3-accuracy-deg", 0, 90, True),
         default=DEFAULT_ACCURACY_DEG,
-        help="accuracy option of azimuth method A3, deg: warn when the step of the peak scan "
-        "allows a larger azimuth error (default %(default)s)",
+        help="accuracy option of azimuth method A3, deg (0, 90]: warn when the step of the peak "
+        "scan allows a larger azimuth error (default %(default)s)",
     )
     e.add_argument("--methods", nargs="+", choices=ALL, help="methods to run (default: all)")
-    e.add_argument("--out", help="write estimates.csv here")
+    e.add_argument("--out", type=Path, help="write estimates.csv here")
     s = sub.add_parser("simulate-readings", help="write a simulated readings CSV from a scenario")
-    s.add_argument("--scenario", required=True, help="simulated scenario YAML")
-    s.add_argument("--trial", type=int, default=0, help="Monte Carlo trial whose noise to use")
-    s.add_argument("--out", required=True, help="CSV to write")
-    args = parser.parse_args(argv)
+    s.add_argument("--scenario", type=Path, required=True, help="simulated scenario YAML")
+    s.add_argument(
+        "--trial",
+        type=count("--trial", 0, MAX_TRIAL),
+        default=0,
+        help="Monte Carlo trial whose noise to use, 0 <= trial < the scenario's n_trials",
+    )
+    s.add_argument("--out", type=Path, required=True, help="CSV to write")
+    return parser, {"estimate": e, "simulate-readings": s}
+
+
+def main(argv: list[str] | None = None, prog: str | None = None) -> int:
+    """The command line; returns 0, or 2 with one ``error:`` line on stderr (bad input,
+    argument or --out, refused before any compute)."""
+    parser, subparsers = _parser(prog)
+    try:
+        args, extra = parser.parse_known_args(argv)
+        if extra:
+            subparsers[args.command].error(f"unrecognized arguments: {' '.join(extra)}")
+    except SystemExit as exc:  # --help (0) or a bad argument (2, one line printed)
+        return int(exc.code or 0) if not isinstance(exc.code, str) else 2
     try:
         if args.command == "estimate":
+            if not Path(args.readings).is_file():
+                raise ConfigError(
+                    f"--readings = {args.readings}: not found or not a file; allowed: a "
+                    "readings CSV file"
+                )
+            if args.out is not None:
+                problem = out_problem(args.out, Path(args.readings), "the readings file")
+                if problem:
+                    raise ConfigError(problem)
             if args.level_source not in (args.methods or ALL):
                 args.methods = [args.level_source, *(args.methods or [])]
             return _estimate(args)
+        if not args.scenario.is_file():
+            raise ConfigError(
+                f"--scenario = {args.scenario}: not found or not a file; allowed: a simulated "
+                "scenario YAML file"
+            )
+        problem = out_problem(args.out, args.scenario, "the scenario file")
+        if problem:
+            raise ConfigError(problem)
         return _simulate_readings(args)
     except ValueError as exc:  # ConfigError is a ValueError
         print(f"error: {exc}", file=sys.stderr)

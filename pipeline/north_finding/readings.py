@@ -38,6 +38,7 @@ __all__ = [
     "layout",
     "standard_normals",
     "check_needs",
+    "check_site",
     "format_help",
 ]
 
@@ -79,6 +80,49 @@ class Readings:
         if role is not None:
             on_axis &= self.role == role
         return np.flatnonzero(on_axis)
+
+
+#: |gyro| allowed, in Earth rates: a still table reads Earth rate plus bias; 100 times more is
+#: a unit mistake (deg/h or deg/s for rad/s)
+MAX_GYRO_EARTH_RATES = 100.0
+#: |accel| allowed on axis z, in g (a still table's z axis reads about -g)
+MAX_Z_ACCEL_G = 1.1
+
+
+def check_site(readings: Readings, path: str | Path, g: float, omega_ie: float) -> None:
+    """ConfigError (naming the file, the row, the column, the value and what is allowed) for
+    a reading a still table at a site with gravity ``g`` and Earth rate ``omega_ie`` cannot
+    give: ``|accel| >= g`` on axis x or y (the table would be tilted 90 deg or more: roll or
+    pitch come out exactly +-90), ``|accel| > 1.1 g`` on z, or ``|gyro|`` over 100 Earth rates.
+
+    >>> x = np.array(["x"])
+    >>> r = Readings(np.array([0.0]), x, np.array([[9.9]]), np.array([[0.0]]), np.array(["fixed"]))
+    >>> check_site(r, "r.csv", 9.80665, 7.292115e-5)
+    Traceback (most recent call last):
+    ...
+    pipeline.config.ConfigError: r.csv: row 1, column accel_m_s2 = 9.9: allowed |accel_m_s2| < g = 9.80665 on axis x (a still table tilted less than 90 deg; check the unit and the axis)
+    """
+    from pipeline.config import ConfigError
+
+    accel, gyro = readings.accel[0], readings.gyro[0]
+    for i, (axis, f, w) in enumerate(zip(readings.axis, accel, gyro, strict=True)):
+        if axis in ("x", "y") and abs(f) >= g:
+            raise ConfigError(
+                f"{path}: row {i + 1}, column accel_m_s2 = {float(f)!r}: allowed "
+                f"|accel_m_s2| < g = {g:g} on axis {axis} (a still table tilted less than 90 "
+                "deg; check the unit and the axis)"
+            )
+        if axis == "z" and abs(f) > MAX_Z_ACCEL_G * g:
+            raise ConfigError(
+                f"{path}: row {i + 1}, column accel_m_s2 = {float(f)!r}: allowed "
+                f"|accel_m_s2| <= {MAX_Z_ACCEL_G:g} g = {MAX_Z_ACCEL_G * g:g} on axis z (m/s^2)"
+            )
+        if abs(w) > MAX_GYRO_EARTH_RATES * omega_ie:
+            raise ConfigError(
+                f"{path}: row {i + 1}, column gyro_rad_s = {float(w)!r}: allowed |gyro_rad_s| <= "
+                f"{MAX_GYRO_EARTH_RATES:g} Earth rates = {MAX_GYRO_EARTH_RATES * omega_ie:.3g} "
+                "rad/s (a still table reads about Earth rate: deg/h or deg/s given?)"
+            )
 
 
 def check_needs(readings: Readings, methods: tuple[str, ...], a2_tau_deg: float | None) -> None:

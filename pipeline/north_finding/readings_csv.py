@@ -100,6 +100,8 @@ ROLES = ("fixed", "ls", "a2", "peak", "z")
 ROLE_AXES = {"fixed": ("x", "y"), "ls": ("x", "y"), "a2": ("x",), "peak": ("x",), "z": ("z",)}
 FIXED_TAU_DEG = (0.0, 90.0, 180.0, 270.0)
 TAU_TOL_DEG = 1e-6
+#: the most samples a reading may average (1 kHz for about 30 years)
+MAX_N_SAMPLES = 10**12
 
 
 def format_help() -> str:
@@ -129,10 +131,30 @@ def read_readings_frame(path: str | Path) -> pd.DataFrame:
     """A user's readings CSV, validated (format in the module docstring); errors name the file,
     the row (1 = first data row), the column, the value and what is allowed."""
     path = Path(path)
+    if not path.is_file():
+        raise ConfigError(f"{path}: not found (or not a file); allowed: a readings CSV file")
+    raw_bytes = path.read_bytes()
+    try:
+        raw_bytes.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise ConfigError(
+            f"{path}: byte {exc.start} = {raw_bytes[exc.start : exc.start + 1]!r}: not UTF-8 "
+            "text; allowed: a UTF-8 (or ASCII) CSV file"
+        ) from None
+    if not raw_bytes.strip() or "\x00" in raw_bytes.decode("utf-8"):
+        shown = "empty" if not raw_bytes.strip() else "contains NUL bytes"
+        raise ConfigError(
+            f"{path}: {shown}; allowed: a readings CSV with a header line "
+            f"({', '.join(READINGS_COLUMNS)}) and one row per reading"
+        )
     try:
         frame = pd.read_csv(path, comment="#", skipinitialspace=True, dtype=str)
     except (OSError, pd.errors.ParserError, pd.errors.EmptyDataError) as exc:
-        raise ConfigError(f"{path}: cannot read readings CSV: {exc}") from exc
+        first = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+        raise ConfigError(
+            f"{path}: cannot read as CSV ({first}); allowed: a header line "
+            f"({', '.join(READINGS_COLUMNS)}) and one comma-separated row per reading"
+        ) from None
     frame.columns = [str(c).strip() for c in frame.columns]
     missing = [c for c in READINGS_COLUMNS if c not in frame.columns]
     if missing:
@@ -151,7 +173,7 @@ def read_readings_frame(path: str | Path) -> pd.DataFrame:
     if extra:
         raise ConfigError(f"{path}: unknown columns {extra}; allowed: {allowed_cols}")
     if frame.empty:
-        raise ConfigError(f"{path}: no readings")
+        raise ConfigError(f"{path}: no readings (a header only); allowed: one row per reading")
     for c in ("axis", "role"):
         frame[c] = frame[c].fillna("").str.strip()
     numeric = ["tau_deg", "accel_m_s2", "gyro_rad_s", "n_samples"]
@@ -174,8 +196,10 @@ def read_readings_frame(path: str | Path) -> pd.DataFrame:
         ("role", ~frame["role"].isin(ROLES), f"allowed {list(ROLES)}"),
         (
             "n_samples",
-            (frame["n_samples"] < 1) | (frame["n_samples"] % 1 != 0),
-            "must be an integer >= 1",
+            (frame["n_samples"] < 1)
+            | (frame["n_samples"] % 1 != 0)
+            | (frame["n_samples"] > MAX_N_SAMPLES),
+            f"must be an integer >= 1 and <= {MAX_N_SAMPLES:.0e} (1 kHz for 30 years)",
         ),
     ]
     if "table_rate_deg_s" in frame.columns:

@@ -14,7 +14,14 @@ from typing import Any
 
 import numpy as np
 
-from pipeline.config import ConfigError, load_schema, load_yaml, sha256_of, validate
+from pipeline.config import (
+    ConfigError,
+    inside_repository,
+    load_schema,
+    load_yaml,
+    sha256_of,
+    validate,
+)
 from pipeline.scenarios import decisions_with_values
 
 __all__ = [
@@ -167,13 +174,30 @@ def build_scenario(raw: Any, path: Path, base: Path = ROOT) -> Scenario:
         n_trials=raw.get("monte_carlo", {}).get("n_trials"),
         seed=raw.get("monte_carlo", {}).get("seed"),
         sensitivity=raw.get("sensitivity"),
-        readings_csv=(base / raw["readings_csv"]) if "readings_csv" in raw else None,
+        readings_csv=_readings_path(raw, path, base),
         ranking=raw.get("ranking"),
         n_inference=raw.get("n_inference"),
     )
     _check_semantics(sc)
     sc.decisions()  # every decision names a real field
     return sc
+
+
+def _readings_path(raw: dict[str, Any], path: Path, base: Path) -> Path | None:
+    """``base / readings_csv``. A workflow scenario file (``<repo>/config/scenarios/<slug>/``)
+    reads a CSV inside its repository (a workflow input, resolved against that root); the
+    command line (``base`` /) and a scenario file elsewhere any file."""
+    if "readings_csv" not in raw:
+        return None
+    where = Path(path).absolute().parents
+    if (
+        base == ROOT
+        and len(where) > 3
+        and where[1].name == "scenarios"
+        and where[2].name == "config"
+    ):
+        return inside_repository(str(raw["readings_csv"]), "readings_csv", path, where[3])
+    return base / raw["readings_csv"]
 
 
 def _check_semantics(sc: Scenario) -> None:
@@ -226,6 +250,7 @@ def _check_readings(sc: Scenario) -> None:
     from pipeline.north_finding import readings as rd  # readings imports this module
 
     readings = rd.load_readings_csv(sc.readings_csv)
+    rd.check_site(readings, sc.readings_csv, sc.g, sc.omega_ie)
     try:
         rd.check_needs(readings, sc.methods, sc.raw.get("a2_tau_deg"))
     except ValueError as exc:

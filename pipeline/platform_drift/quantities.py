@@ -17,7 +17,7 @@ Values are returned in the item's printed unit (km, m, s, h).
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -59,14 +59,19 @@ UNITS = {"km": 1000.0, "m": 1.0, "s": 1.0, "h": 3600.0}
 QUANTITY_UNITS = {"error_2h_m": ("km", "m"), "crossover_s": ("s", "h")}
 
 
-def check_item(item: Mapping[str, Any]) -> list[Problem]:
-    """Problems of an item's selectors, kind, quantity and unit for this paper."""
+def check_item(item: Mapping[str, Any], scenarios: Sequence[str] | None = None) -> list[Problem]:
+    """Problems of an item's selectors, kind, quantity and unit for this paper; ``scenarios``
+    (the scenario files' names), when given, are the scenarios an item may select."""
     select = dict(item.get("select") or {})
     problems: list[Problem] = []
     for key in sorted(set(select) - {"scenario", "case", "scheme"}):
         problems.append((f"select.{key}", select[key], "only the selectors scenario, case, scheme"))
     if not isinstance(select.get("scenario"), str) or not select.get("scenario"):
         problems.append(("select.scenario", select.get("scenario"), "a scenario name"))
+    elif scenarios is not None and select["scenario"] not in scenarios:
+        problems.append(
+            ("select.scenario", select["scenario"], f"one of the scenarios {list(scenarios)}")
+        )
     if select.get("case") not in DRIFT_CASES:
         problems.append(("select.case", select.get("case"), f"one of {list(DRIFT_CASES)}"))
     if select.get("scheme") != "strapdown":

@@ -27,8 +27,12 @@ __all__ = ["load_published", "main", "write_verdicts"]
 
 
 def load_published(path: str | Path) -> dict:
-    """The published file, validated with this paper's selectors and claim tests."""
-    return _load(path, claims=CLAIMS, check_item=check_item)
+    """The published file, validated with this paper's selectors and claim tests; in a
+    repository layout (``<root>/config/published/``) every item selects one of the scenario
+    files of ``<root>/config/scenarios/platform_drift/``."""
+    scenarios_dir = Path(path).absolute().parents[1] / "scenarios" / "platform_drift"
+    names = sorted(p.stem for p in scenarios_dir.glob("*.yaml")) or None
+    return _load(path, claims=CLAIMS, check_item=lambda item: check_item(item, names))
 
 
 #: the scenario configs

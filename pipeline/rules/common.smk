@@ -17,23 +17,13 @@ sys.path.insert(0, workflow.basedir)
 
 from pipeline.code_inputs import module_closure, notebook_imports, script_imports  # noqa: E402
 from pipeline.config import ConfigError  # noqa: E402
-from pipeline.registry import (  # noqa: E402
-    context,
-    load_papers,
-    validate_published,
-    validate_scenarios,
-    validate_workflow_config,
-)
+from pipeline.registry import check_workflow  # noqa: E402
 
 try:
     # config/config.yaml read strictly (duplicate keys, NaN, aliases), validated, its
     # directories kept inside the repository; then the plug-ins and every scenario file
-    validate_workflow_config(config, workflow.configfiles, Path(workflow.basedir))
-    PAPERS = load_papers(config["papers"])
-    CONTEXTS = {slug: context(paper, config) for slug, paper in PAPERS.items()}
-    for _slug, _paper in PAPERS.items():
-        validate_scenarios(_paper, CONTEXTS[_slug].scenarios, CONTEXTS[_slug].scenarios_dir)
-        validate_published(_paper, CONTEXTS[_slug])
+    # (pipeline.registry.check_workflow; the bad-input corpus, tests/bad_input/, calls it too)
+    PAPERS, CONTEXTS = check_workflow(config, workflow.configfiles, Path(workflow.basedir))
 except ConfigError as _error:
     # one clean message before any job, not Snakemake's stack frames
     sys.stderr.write(f"{_error}\n")

@@ -7,9 +7,6 @@ must name the file, the dotted field and what is allowed.
 from __future__ import annotations
 
 import copy
-import os
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -20,7 +17,6 @@ from pipeline.north_finding import readings as rd
 from pipeline.north_finding.paper import PAPER as NF_PAPER
 from pipeline.north_finding.scenario import ROOT, load_scenario
 from pipeline.registry import validate_scenarios
-from tests.hang_guard import HANG_GUARD_S
 
 PAPER = ROOT / "config" / "scenarios" / "north_finding" / "paper.yaml"
 EXAMPLE_CSV = ROOT / "config" / "scenarios" / "north_finding" / "data" / "example_readings.csv"
@@ -196,24 +192,7 @@ def test_csv_missing_position_needed_by_L1(tmp_path):
 # --------------------------------------------------------------------------------------------
 # command line
 # --------------------------------------------------------------------------------------------
-def test_cli_estimate_bad_latitude_exits_2_and_writes_nothing(tmp_path):
-    out = tmp_path / "est.csv"
-    r = subprocess.run(
-        [
-            sys.executable, "-m", "pipeline.north_finding.cli", "estimate",
-            "--readings", str(EXAMPLE_CSV), "--lat-deg", "95", "--g", "9.80665",
-            "--compass-deg", "220", "--out", str(out),
-        ],
-        cwd=tmp_path,
-        env={**os.environ, "PYTHONPATH": str(ROOT)},
-        capture_output=True,
-        text=True,
-        timeout=HANG_GUARD_S,
-    )  # fmt: skip
-    assert r.returncode == 2
-    assert "lat_deg" in r.stderr and "95" in r.stderr and "< 90" in r.stderr
-    assert not out.exists()
-    assert list(tmp_path.iterdir()) == []
+# (the command line's bad arguments: tests/bad_input/test_cli_north_finding.py)
 
 
 # --------------------------------------------------------------------------------------------
