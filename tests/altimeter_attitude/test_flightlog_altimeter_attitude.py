@@ -91,7 +91,7 @@ def _write(tmp_path, frame, name="bad.csv"):
         ),
         (
             lambda f: f.assign(t_s=f["t_s"].where(f.index != 10, f["t_s"][9])),
-            r"column t_s must increase strictly; data rows 11 do not",
+            r"column t_s must be strictly increasing; data rows 11 \(0.18 s\) are not",
         ),
         (
             lambda f: f.assign(
@@ -103,7 +103,7 @@ def _write(tmp_path, frame, name="bad.csv"):
             lambda f: f.assign(
                 accel_z_m_s2=f["accel_z_m_s2"].astype(object).where(f.index != 8, "inf")
             ),
-            r"column accel_z_m_s2 \(accel_z\), data row 9: inf is not a finite number",
+            r"column accel_z_m_s2 \(accel_z\), data row 9: 'inf' is not a finite number",
         ),
         (
             lambda f: f.assign(altimeter_m=f["altimeter_m"].where(f.index != 7, 1000.0)),
@@ -211,11 +211,11 @@ def test_bad_arguments_are_named(simulated, tmp_path, capsys, args, match):
             "columns: {t: {column: time, unit: min}}\n",
             "unit 'min' unknown for t; allowed: s, ms, us",
         ),
-        ("columns: {t: [\n", "cannot read the format file"),
+        ("columns: {t: [\n", "not valid YAML"),
         ("columns: {gyro_x: {column: 5, unit: deg/s}}\n", "the column and unit must be non-empty"),
         (
             "columns: {altimeter: {column: h, unit: .nan}}\n",
-            "the column and unit must be non-empty",
+            "columns.altimeter.unit = nan: not a finite number",
         ),
         ("columns: {gyro_x: gx}\n", "gyro_x=gx: no unit given and none in the column name"),
     ],
@@ -226,7 +226,9 @@ def test_bad_format_files_are_named(simulated, tmp_path, capsys, text, match):
     fmt.write_text(text, encoding="utf-8")
     assert flightlog.main([str(path), "--out", str(tmp_path / "o.csv"), "--format", str(fmt)]) == 2
     err = capsys.readouterr().err
-    assert f"error: {fmt}: " in err and match in err and err.count("\n") == 1, err
+    assert (
+        err.startswith("error: ") and f"{fmt}: " in err and match in err and err.count("\n") == 1
+    ), err
 
 
 def test_unusable_out_is_refused_before_compute(simulated, tmp_path, capsys, monkeypatch):
