@@ -321,7 +321,7 @@ def _bad(tmp_path: Path, edit) -> Path:
         (
             lambda r: r.__setitem__("decisions", [{"field": "nowhere.at_all", "text": "x"}]),
             "nowhere.at_all",
-            "not found",
+            "not a field of this scenario",
         ),
     ],
 )
