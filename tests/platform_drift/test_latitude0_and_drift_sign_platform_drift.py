@@ -16,6 +16,7 @@ from pipeline.platform_drift.run import run_scenario
 from pipeline.platform_drift.scenario import ROOT, load_scenario
 from pipeline.platform_drift.trajectory import haversine
 from pipeline.platform_drift.verdicts import write_verdicts
+from tests.equator_scenario import write_equator_scenario
 
 SCEN = ROOT / "config" / "scenarios" / "platform_drift"
 PUBLISHED = ROOT / "config" / "published" / "platform_drift.yaml"
@@ -25,13 +26,7 @@ PUBLISHED = ROOT / "config" / "published" / "platform_drift.yaml"
 def equator(tmp_path_factory):
     """The stationary scenario moved to latitude 0 (2 h only), run, and judged."""
     base = tmp_path_factory.mktemp("lat0")
-    raw = yaml.safe_load((SCEN / "stationary.yaml").read_text(encoding="utf-8"))
-    raw["start"]["lat_deg"] = 0.0
-    raw.pop("long_duration_s")
-    raw["decisions"] = [d for d in raw["decisions"] if d["field"] != "long_duration_s"]
-    (base / "scen").mkdir()
-    path = base / "scen" / "stationary.yaml"
-    path.write_text(yaml.safe_dump(raw, sort_keys=False), encoding="utf-8")
+    path = write_equator_scenario(base / "scen")
     run_scenario(load_scenario(path), base / "res" / "stationary", log=lambda m: None)
     verdicts = write_verdicts(PUBLISHED, base / "res", base / "verdicts.csv", base / "scen")
     return base, verdicts

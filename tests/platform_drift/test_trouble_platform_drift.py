@@ -9,12 +9,12 @@ import dataclasses
 import numpy as np
 import pandas as pd
 import pytest
-import yaml
 
 from pipeline.platform_drift.report import _trouble
 from pipeline.platform_drift.run import TROUBLE_KINDS, _trouble_frame, run_scenario
 from pipeline.platform_drift.scenario import ROOT, load_scenario
 from pipeline.trouble import TROUBLE_COLUMNS, Trouble
+from tests.equator_scenario import write_equator_scenario
 
 SCEN = ROOT / "config" / "scenarios" / "platform_drift"
 
@@ -43,12 +43,7 @@ def _check_against_curves(d) -> pd.DataFrame:
 def equator(tmp_path_factory):
     """The stationary scenario at latitude 0, channel-3 drift only, 2 h."""
     base = tmp_path_factory.mktemp("lat0")
-    raw = yaml.safe_load((SCEN / "stationary.yaml").read_text(encoding="utf-8"))
-    raw["start"]["lat_deg"] = 0.0
-    raw.pop("long_duration_s")
-    raw["decisions"] = [d for d in raw["decisions"] if d["field"] != "long_duration_s"]
-    path = base / "stationary.yaml"
-    path.write_text(yaml.safe_dump(raw, sort_keys=False), encoding="utf-8")
+    path = write_equator_scenario(base)
     sc = dataclasses.replace(load_scenario(path), cases=("ch1", "ch3"))
     run_scenario(sc, base / "out", log=lambda m: None)
     return base / "out"
