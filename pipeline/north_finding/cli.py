@@ -25,7 +25,18 @@ is an error before any compute.
 Output (stdout, and --out as estimates.csv): method, quantity, estimate with the
 unit in the quantity's name: phi_deg, theta_deg (roll, pitch of T, deg), psi_deg
 (azimuth of x_T from north, clockwise, deg), acc_bias_ug (micro-g), acc_scale
-and gyro_scale (S = 1 + scale-factor error), gyro_bias_rad_s (rad/s).
+and gyro_scale (S = 1 + scale-factor error), gyro_bias_rad_s (rad/s); and flag,
+';'-separated, empty when the estimate passed every check. Each flag also prints
+one "warning:" line on stderr:
+  a3_scan_bound_exceeds_accuracy / a3_scan_bound_unknown  the step of the A3 peak
+      scan allows an error above --a3-accuracy-deg / cannot be bounded (1 reading);
+  a3_peak_unreachable  the largest peak reading is outside the range eq. 45 reaches
+      at this roll, pitch and latitude (typically a gyro bias): A3's psi does not
+      follow the readings (use A4, which estimates the bias);
+  compass_disagrees  psi is more than --compass-tolerance-deg from --compass-deg;
+  clipped_arcsine, unreachable_root, complex_roots, non_finite  numerical trouble
+      (pipeline/north_finding/trouble.py): an argument out of the formula's domain
+      was clipped, or the estimate is NaN.
 
 Inputs are validated with the same schema as scenario files; errors name the
 option, the value and what is allowed, and nothing is written on error.
@@ -45,6 +56,7 @@ from pipeline.cli_args import Parser, count, number, out_problem
 from pipeline.config import ConfigError
 from pipeline.north_finding import columns as col
 from pipeline.north_finding import readings as rd
+from pipeline.north_finding import readings_checks as rc
 from pipeline.north_finding.run import _readings, scenario_key
 from pipeline.north_finding.scan_bound import DEFAULT_ACCURACY_DEG
 from pipeline.north_finding.scenario import build_scenario, load_scenario
@@ -65,7 +77,7 @@ def _estimate(args: argparse.Namespace) -> int:
         "type": "readings",
         "readings_csv": str(Path(args.readings).resolve()),
         "site": {"lat_deg": args.lat_deg, "g_m_s2": args.g, "omega_ie_rad_s": args.omega_ie},
-        "compass": {"heading_deg": args.compass_deg},
+        "compass": {"heading_deg": args.compass_deg, "tolerance_deg": args.compass_tolerance_deg},
         "level_source": args.level_source,
         "methods": args.methods or ALL,
         "a2_tau_deg": args.a2_tau_deg,
@@ -77,7 +89,7 @@ def _estimate(args: argparse.Namespace) -> int:
     est = frames["estimates"].drop(columns=["sensor"])
     if args.out:
         write_csv(args.out, frames["estimates"], col.ESTIMATE_COLUMNS)
-    print(est[["method", "quantity", "estimate"]].to_string(index=False))
+    print(est[["method", "quantity", "estimate", "flag"]].fillna("").to_string(index=False))
     return 0
 
 
@@ -159,6 +171,15 @@ def _parser(prog: str | None) -> tuple[argparse.ArgumentParser, dict[str, argpar
         required=True,
         type=number("--compass-deg", -180, 360),
         help="coarse heading, deg [-180, 360]",
+    )
+    e.add_argument(
+        "--compass-tolerance-deg",
+        type=number("--compass-tolerance-deg", 0, 180, True),
+        default=rc.DEFAULT_COMPASS_TOLERANCE_DEG,
+        help="stated accuracy of --compass-deg, deg (0, 180]: an azimuth estimate farther than "
+        "this from it is flagged compass_disagrees with a warning (the compass only picks among "
+        "each method's roots; beyond its accuracy the other root may be right) (default "
+        "%(default)s)",
     )
     e.add_argument(
         "--level-source",

@@ -45,6 +45,7 @@ from pipeline.atomic import write_csv, write_json
 from pipeline.north_finding import columns as col
 from pipeline.north_finding import estimators as est
 from pipeline.north_finding import readings as rd
+from pipeline.north_finding import readings_checks as rc
 from pipeline.north_finding import scan_bound as sb
 from pipeline.north_finding.ranking import ranking_frames
 from pipeline.north_finding.scenario import ROOT, Scenario, load_scenario
@@ -377,11 +378,37 @@ def _readings(sc: Scenario, log) -> dict[str, pd.DataFrame]:
     )
     log(f"{sc.name}: estimated from {sc.readings_csv.name} ({readings.tau_deg.size} positions)")
     frames = {k: _empty(k) for k in OUTPUTS}
-    frames["estimates"] = estimates_frame(out, truth, "real", bounds, sb.accuracy_deg(sc.raw))
-    for note in sb.warnings(frames["estimates"], sb.accuracy_deg(sc.raw)):
-        log(f"warning: {sc.readings_csv.name}: {note}")
     frames["numerical_trouble"] = trouble.frame(out, "readings")
+    compass_deg = float(np.rad2deg(sc.compass_heading))
+    tolerance = float(sc.raw["compass"].get("tolerance_deg", rc.DEFAULT_COMPASS_TOLERANCE_DEG))
+    frames["estimates"] = rc.add_flags(
+        estimates_frame(out, truth, "real", bounds, sb.accuracy_deg(sc.raw)),
+        frames["numerical_trouble"],
+        compass_deg,
+        tolerance,
+    )
+    name = sc.readings_csv.name
+    for note in sb.warnings(frames["estimates"], sb.accuracy_deg(sc.raw)):
+        log(f"warning: {name}: {note}")
+    for note in rc.flag_notes(frames["estimates"], compass_deg, tolerance):
+        if note.startswith("method A3: the peak reading"):  # the numbers, from the readings
+            theta, phi = _level(readings, site, sc, level)
+            note = rc.a3_peak_note(readings, sc.omega_ie, sc.lat, theta, phi)
+        log(f"warning: {name}: {note}")
     return frames
+
+
+def _level(
+    readings: rd.Readings, site: est.Site, sc: Scenario, level: tuple[float, float] | None
+) -> tuple[float, float]:
+    """The pitch and roll (rad) the azimuth methods of a readings run used: (theta, phi)."""
+    if sc.level_source == "truth" and level is not None:
+        return level
+    out = est.levelling(readings, site, (sc.level_source,))
+    return (
+        float(np.deg2rad(out[sc.level_source, "theta_deg"][0])),
+        float(np.deg2rad(out[sc.level_source, "phi_deg"][0])),
+    )
 
 
 OUTPUTS = {

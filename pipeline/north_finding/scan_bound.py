@@ -127,13 +127,18 @@ def accuracy_deg(raw: Mapping[str, Any]) -> float:
 
 
 def warnings(estimates: pd.DataFrame, accuracy: float | None = None) -> list[str]:
-    """One sentence per flagged A3 row of ``estimates`` (estimates.csv rows); ``accuracy``
-    (deg) is named if given."""
+    """One sentence per A3 row of ``estimates`` (estimates.csv rows) flagged for its scan bound
+    (the ``flag`` column is ';'-separated; other flags are
+    :func:`pipeline.north_finding.readings_checks.flag_notes`'); ``accuracy`` (deg) is named if
+    given."""
     limit = "a3_accuracy_deg" if accuracy is None else f"a3_accuracy_deg = {accuracy:g} deg"
     notes = []
     flags = estimates["flag"].astype(object).where(estimates["flag"].notna(), "").astype(str)
-    for _, r in estimates[flags != ""].iterrows():
-        if r["flag"] == FLAG_EXCEEDS:
+    for i, r in estimates.iterrows():
+        mine = [f for f in flags[i].split(";") if f in (FLAG_EXCEEDS, FLAG_UNKNOWN)]
+        if not mine:
+            continue
+        if mine[0] == FLAG_EXCEEDS:
             notes.append(
                 f"method A3 ({r['sensor']} sensor): the step of the peak scan allows an azimuth "
                 f"error of up to {float(r['scan_bound_deg']):.3g} deg, above {limit}; scan the "
