@@ -77,6 +77,19 @@ class _Printer(NumPyPrinter):
         name = super()._module_format(fqn, register)
         return name.replace("numpy.", "np.")
 
+    def _print_Min(self, expr: sp.Min) -> str:  # noqa: N802 (sympy's printer protocol)
+        """Element-wise minimum, nested ``np.minimum`` (sympy's default needs functools)."""
+        return self._nested("np.minimum", expr.args)
+
+    def _print_Max(self, expr: sp.Max) -> str:  # noqa: N802
+        return self._nested("np.maximum", expr.args)
+
+    def _nested(self, func: str, args: Sequence[sp.Expr]) -> str:
+        out = self._print(args[0])
+        for a in args[1:]:
+            out = f"{func}({out}, {self._print(a)})"
+        return out
+
 
 def _identifier(sym: sp.Symbol, names: Mapping[sp.Symbol, str]) -> str:
     name = names.get(sym, sym.name)

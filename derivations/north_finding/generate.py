@@ -166,7 +166,8 @@ def functions() -> list[GeneratedFunction]:
             (s.ca, s.cb, s.cc),
             azimuth.phase_roots(),
             "Both roots psi of a sin(psi) + b cos(psi) = c (eqs. 41, 43, 59 in phase form:\n"
-            "    psi = atan2(a, b) -/+ acos(c / sqrt(a^2 + b^2))). NaN where |c| > sqrt(a^2+b^2).",
+            "    psi = atan2(a, b) -/+ acos(c / sqrt(a^2 + b^2))), the ratio clipped to [-1, 1]:\n"
+            "    the double root where |c| >= sqrt(a^2 + b^2) (callers count |c| > it as trouble).",
         ),
         GeneratedFunction(
             "a3_peak",

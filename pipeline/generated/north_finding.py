@@ -180,9 +180,10 @@ def a2_coeffs(w_tau, tau, omega_ie, lat, theta, phi):
 
 def sinusoid_roots(a, b, c):
     """Both roots psi of a sin(psi) + b cos(psi) = c (eqs. 41, 43, 59 in phase form:
-    psi = atan2(a, b) -/+ acos(c / sqrt(a^2 + b^2))). NaN where |c| > sqrt(a^2+b^2)."""
+    psi = atan2(a, b) -/+ acos(c / sqrt(a^2 + b^2))), the ratio clipped to [-1, 1]:
+    the double root where |c| >= sqrt(a^2 + b^2) (callers count |c| > it as trouble)."""
     _x0 = np.arctan2(a, b)
-    _x1 = np.arccos(c/np.sqrt(a**2 + b**2))
+    _x1 = np.arccos(np.maximum(-1, np.minimum(1, c/np.sqrt(a**2 + b**2))))
     out0 = _x0 - _x1
     out1 = _x0 + _x1
     return _broadcast(out0, out1)

@@ -162,10 +162,10 @@ def _two_roots(
     a: np.ndarray, b: np.ndarray, c: np.ndarray, trouble: Trouble | None = None, method: str = ""
 ) -> np.ndarray:
     """Both roots of a sin(psi) + b cos(psi) = c, (T, 2) in rad."""
-    # clip c to the reachable range so that noise never leaves psi undefined (counted)
+    # |c| > r: unreachable (noise); the double root is used and counted
     r = np.hypot(a, b)
     mark(trouble, method, "unreachable_root", np.abs(c) > r)
-    lo, hi = gen.sinusoid_roots(a, b, np.clip(c, -r, r))
+    lo, hi = gen.sinusoid_roots(a, b, c)  # the generated roots clip c / r to [-1, 1]
     return np.stack([lo, hi], axis=1)
 
 
