@@ -24,6 +24,7 @@ from pipeline.north_finding.columns import (
     SENSITIVITY_COLUMNS,
     SENSORS,
 )
+from pipeline.north_finding.readings_checks import flag_notes
 from pipeline.north_finding.report_trouble import trouble_blocks
 from pipeline.north_finding.scan_bound import warnings as scan_warnings
 from pipeline.report.html import format_value, slugify
@@ -244,6 +245,7 @@ def scenario_section(d: Path) -> Section:
             for sensor in SENSORS
         ]
         estimates += [Paragraph(f"Note: {note}.") for note in scan_warnings(est)]
+        estimates += [Paragraph(f"Note: {note}.") for note in flag_notes(est)]
     mcs = read_csv(d / "mc_summary.csv", MC_SUMMARY_COLUMNS)
     mc: list[Block] = [
         not_available("mc_summary.csv")
