@@ -41,7 +41,9 @@ def simulated(tmp_path_factory):
 def test_log_round_trip_matches_the_pipeline_filter(simulated, tmp_path):
     sc, inp, frame, path = simulated
     out = tmp_path / "att.csv"
-    assert flightlog.main([str(path), "--out", str(out), "--filters", "linear_kf,gyro_only"]) == 0
+    args = [str(path), "--out", str(out), "--filters", "linear_kf,gyro_only"]
+    # the reference below is the scenario's 2-deg initial sigma (the CLI's default is levelling's)
+    assert flightlog.main([*args, "--init-sigma-deg", "2"]) == 0
     result = pd.read_csv(out)
     assert list(result.columns) == FLIGHTLOG_OUTPUT_COLUMNS
     assert set(result["filter"]) == {"linear_kf", "gyro_only"}
