@@ -66,8 +66,6 @@ from typing import Any
 
 import numpy as np
 import pandas as pd
-from scipy.special import log_ndtr
-from scipy.stats import kstest
 
 from pipeline.north_finding.columns import MC_JUDGED_COLUMNS, N_PROFILE_COLUMNS, N_ROW_COLUMNS
 from pipeline.verdicts.kinds import RANK_BAND, percentile_rank
@@ -129,6 +127,10 @@ def interval_log_prob(mean: float, std: float, lo: float, hi: float) -> float:
     """
     if not std > 0:
         return 0.0 if lo <= mean < hi else -math.inf
+    # scipy imported here, not at module level: the Snakefile's parse imports this module
+    # (through the paper's claims) and scipy.stats costs ~1 s of CPU there
+    from scipy.special import log_ndtr
+
     a, b = (lo - mean) / std, (hi - mean) / std
     if a > 0:  # right tail: use the mirror image, where log_ndtr is accurate
         a, b = -b, -a
@@ -278,6 +280,8 @@ def infer_frames(
     log_p, ranks, stats = np.full(shape, -math.inf), np.full(shape, np.nan), {}
     # per grid N the fewest finite trials any row is judged on (NaN trials are dropped and
     # counted as numerical trouble): n_profile's n_trials is the count actually used
+    from scipy.stats import kstest  # lazily: see interval_log_prob
+
     n_used = [min(np.size(v) for v in estimates[n].values()) for n in grid]
     for i, item in enumerate(items):
         key = (item["select"]["method"], item["quantity"])

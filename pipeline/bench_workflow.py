@@ -1,0 +1,217 @@
+"""Workflow benchmark (issue 15): CPU seconds per step of the last reproduction, and a no-op.
+
+``python -m pipeline.bench_workflow [--results results] [--baseline DIR] [--noop-repeat 3]``
+(part of ``make bench``). It reads the Snakemake benchmark files of every job,
+``<results>/<paper>/benchmarks/<step>[_<scenario>].tsv`` and ``<results>/benchmarks/*.tsv``
+(columns ``s`` = wall seconds and ``cpu_time`` = user + system CPU seconds of the job's
+processes), and prints per step the jobs, CPU and wall seconds, then the totals against the
+issue's targets:
+
+* a full reproduction in <= 60 s of wall time on 2 cores: the jobs' CPU seconds / 2 is the
+  least wall time 2 cores need (printed with the span of the jobs' benchmark files, which is
+  the run's wall time when every job ran in the same run);
+* a no-op ``make reproduce`` in <= 3 s: measured here, ``--noop-repeat`` times (median and
+  range of CPU seconds, user + system of make and every process it starts), only when a dry
+  run finds nothing to do (otherwise it would be a real run, and it is not started).
+
+``--baseline DIR`` adds the same columns for another results directory (e.g. a checkout
+before a change) and the difference. The timings are of this machine and this run; they are
+not results (nothing here is written under results/ or reports/).
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import os
+import resource
+import statistics
+import subprocess
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+__all__ = ["StepTime", "collect", "main", "measure_noop", "step_table"]
+
+#: issue 15's targets, seconds
+FULL_RUN_TARGET_S = 60.0
+NOOP_TARGET_S = 3.0
+CORES = 2
+
+
+@dataclass(frozen=True)
+class StepTime:
+    """The jobs of one step (a rule; per-scenario jobs summed): count, CPU and wall seconds."""
+
+    paper: str
+    step: str
+    jobs: int
+    cpu_s: float
+    wall_s: float
+    #: newest benchmark file's mtime and the earliest start (mtime - wall) of the step's jobs
+    end: float
+    start: float
+
+
+def _read_tsv(path: Path) -> tuple[float, float]:
+    """(wall s, CPU s) of one Snakemake benchmark file (its first row)."""
+    with path.open(encoding="utf-8", newline="") as fh:
+        rows = list(csv.DictReader(fh, delimiter="\t"))
+    if not rows or "s" not in rows[0] or "cpu_time" not in rows[0]:
+        raise ValueError(f"{path}: not a Snakemake benchmark file (columns s, cpu_time)")
+    try:
+        return float(rows[0]["s"]), float(rows[0]["cpu_time"])
+    except ValueError as exc:
+        raise ValueError(f"{path}: s or cpu_time is not a number: {exc}") from None
+
+
+def _step_name(stem: str, scenarios: set[str]) -> str:
+    """``simulate_paper`` -> ``simulate`` when ``paper`` is a scenario of the paper."""
+    for scenario in sorted(scenarios, key=len, reverse=True):
+        if stem.endswith(f"_{scenario}") and len(stem) > len(scenario) + 1:
+            return stem[: -len(scenario) - 1]
+    return stem
+
+
+def collect(results: Path) -> list[StepTime]:
+    """Every step's jobs under ``results``, sorted by paper then step."""
+    found: dict[tuple[str, str], list[tuple[float, float, float]]] = {}
+    for tsv in sorted(results.glob("*/benchmarks/*.tsv")) + sorted(
+        results.glob("benchmarks/*.tsv")
+    ):
+        paper = tsv.parent.parent.name if tsv.parent.parent != results else "(all papers)"
+        # a per-scenario job's file is <step>_<scenario>.tsv; scenario dirs carry provenance
+        scenarios = {p.parent.name for p in tsv.parent.parent.glob("*/provenance.json")}
+        wall, cpu = _read_tsv(tsv)
+        key = (paper, _step_name(tsv.stem, scenarios))
+        found.setdefault(key, []).append((wall, cpu, tsv.stat().st_mtime))
+    return [
+        StepTime(
+            paper,
+            step,
+            len(jobs),
+            sum(c for _, c, _ in jobs),
+            sum(w for w, _, _ in jobs),
+            max(m for _, _, m in jobs),
+            min(m - w for w, _, m in jobs),
+        )
+        for (paper, step), jobs in sorted(found.items())
+    ]
+
+
+def step_table(steps: list[StepTime], baseline: list[StepTime] | None = None) -> str:
+    """The per-step table (CPU and wall seconds; with ``baseline``: before, after, change)."""
+    before = {(s.paper, s.step): s for s in baseline or []}
+    keys = [(s.paper, s.step) for s in steps]
+    keys += [k for k in sorted(before) if k not in keys]
+    now = {(s.paper, s.step): s for s in steps}
+    head = f"{'paper':<20} {'step':<22} {'jobs':>4} {'CPU s':>8} {'wall s':>8}"
+    if baseline is not None:
+        head += f" {'CPU s before':>13} {'change':>8}"
+    lines = [head, "-" * len(head)]
+    for key in keys:
+        s, b = now.get(key), before.get(key)
+        jobs = f"{s.jobs:>4}" if s else f"{'-':>4}"
+        cpu = f"{s.cpu_s:>8.1f}" if s else f"{'-':>8}"
+        wall = f"{s.wall_s:>8.1f}" if s else f"{'-':>8}"
+        line = f"{key[0]:<20} {key[1]:<22} {jobs} {cpu} {wall}"
+        if baseline is not None:
+            old = f"{b.cpu_s:>13.1f}" if b else f"{'-':>13}"
+            change = f"{(s.cpu_s if s else 0.0) - (b.cpu_s if b else 0.0):>+8.1f}"
+            line += f" {old} {change}"
+        lines.append(line)
+    total = sum(s.cpu_s for s in steps)
+    foot = f"{'total':<20} {'':<22} {sum(s.jobs for s in steps):>4} {total:>8.1f}"
+    foot += f" {sum(s.wall_s for s in steps):>8.1f}"
+    if baseline is not None:
+        old_total = sum(b.cpu_s for b in baseline)
+        foot += f" {old_total:>13.1f} {total - old_total:>+8.1f}"
+    return "\n".join(lines + ["-" * len(head), foot])
+
+
+def _children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def measure_noop(root: Path, repeat: int) -> list[float] | str:
+    """CPU seconds of ``repeat`` no-op ``make reproduce`` runs in ``root``, or why not run."""
+    env = dict(os.environ, PYTHONPATH=str(root))
+    snakemake = root / ".venv" / "bin" / "snakemake"
+    dry = subprocess.run(
+        [str(snakemake), "--dry-run", "--cores", str(CORES), "--rerun-triggers", "mtime"]
+        + ["params", "input", "code", "software-env"],
+        cwd=root,
+        env=env,
+        capture_output=True,
+        text=True,
+    )
+    if dry.returncode != 0:
+        return f"not measured: the dry run failed ({dry.stderr.strip().splitlines()[-1:]})"
+    if "Nothing to be done" not in dry.stdout + dry.stderr:
+        return "not measured: the workflow is not up to date (run `make reproduce` first)"
+    times = []
+    for _ in range(repeat):
+        before = _children_cpu()
+        done = subprocess.run(
+            ["make", "--no-print-directory", "reproduce"], cwd=root, capture_output=True
+        )
+        if done.returncode != 0:
+            return f"not measured: make reproduce failed with status {done.returncode}"
+        times.append(_children_cpu() - before)
+    return times
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--results", type=Path, default=Path("results"))
+    parser.add_argument("--baseline", type=Path, default=None, help="results dir to compare")
+    parser.add_argument("--noop-repeat", type=int, default=3, help="0 skips the no-op run")
+    args = parser.parse_args(argv)
+    for name, path in (("--results", args.results), ("--baseline", args.baseline)):
+        if path is not None and not path.is_dir():
+            print(f"error: {name} {path}: not a directory (a workflow's results)", file=sys.stderr)
+            return 2
+    if args.noop_repeat < 0:
+        print(f"error: --noop-repeat {args.noop_repeat}: must be >= 0", file=sys.stderr)
+        return 2
+    try:
+        steps = collect(args.results)
+        baseline = collect(args.baseline) if args.baseline else None
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    if not steps:
+        print(f"error: {args.results}: no benchmarks/*.tsv (run `make reproduce`)", file=sys.stderr)
+        return 2
+    print(f"Workflow steps of the last reproduction ({args.results}), CPU = user + system")
+    print(step_table(steps, baseline))
+    cpu = sum(s.cpu_s for s in steps)
+    wall = sum(s.wall_s for s in steps)
+    span = max(s.end for s in steps) - min(s.start for s in steps)
+    print()
+    print(
+        f"full run: {cpu:.1f} CPU-s in jobs -> at least {cpu / CORES:.1f} s of wall on {CORES} "
+        f"cores (target {FULL_RUN_TARGET_S:.0f} s): "
+        + ("meets it" if cpu / CORES <= FULL_RUN_TARGET_S else "misses it")
+    )
+    if span <= wall:
+        print(f"          the jobs' files span {span:.1f} s of wall (one run; load included)")
+    else:
+        print("          the jobs ran in more than one run: no single run's wall time")
+    if args.noop_repeat:
+        noop = measure_noop(Path.cwd(), args.noop_repeat)
+        if isinstance(noop, str):
+            print(f"no-op make reproduce: {noop}")
+        else:
+            med = statistics.median(noop)
+            print(
+                f"no-op make reproduce: median {med:.2f} CPU-s of {len(noop)} "
+                f"(range {min(noop):.2f}-{max(noop):.2f}; target {NOOP_TARGET_S:.0f} s): "
+                + ("meets it" if med <= NOOP_TARGET_S else "misses it")
+            )
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
