@@ -5,18 +5,45 @@ functions are compiled here as they are (``numba.njit(gen.f, cache=True)``), not
 They end in ``_broadcast(out0, ...)``, which in compiled code is overloaded to return the
 outputs as a tuple of floats (scalars need no broadcasting), so a kernel can index it.
 
-numba's on-disk cache goes to ``NUMBA_CACHE_DIR``, by default ``.snakemake/numba-cache`` of
-the checkout (ignored by git, removed by ``make clean``); no file is written into the source
-tree, and a fresh clone compiles once (~20 CPU-s) on first use.
+numba's on-disk cache goes to ``<base>/<key>``: ``base`` is ``NUMBA_CACHE_DIR`` if set, else
+``.snakemake/numba-cache`` of the checkout (ignored by git, removed by ``make clean``), so no
+file is written into the source tree and a fresh clone compiles once (~20 CPU-s) on first
+use. ``key`` hashes the kernel sources, the generated module and the numba version: numba
+invalidates a cached function only when its own file changes, not when a function it calls
+does (a regenerated formula, a changed option here), so a new key starts a fresh cache.
 """
 
 from __future__ import annotations
 
+import hashlib
 import os
+from importlib.metadata import version
+from pathlib import Path
 
 from pipeline.altimeter_attitude.scenario import ROOT
 
-os.environ.setdefault("NUMBA_CACHE_DIR", str(ROOT / ".snakemake" / "numba-cache"))
+_HERE = Path(__file__).resolve().parent
+#: the files whose compiled code the cache holds (any change: a fresh cache directory)
+CACHE_SOURCES = (
+    _HERE / "jit.py",
+    _HERE / "kernels_euler.py",
+    _HERE / "kernels_c.py",
+    _HERE / "mc_sums.py",
+    ROOT / "pipeline" / "generated" / "altimeter_attitude.py",
+)
+
+
+def cache_key() -> str:
+    digest = hashlib.sha256(f"numba {version('numba')}".encode())
+    for path in CACHE_SOURCES:
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:16]
+
+
+_BASE = Path(os.environ.get("NUMBA_CACHE_DIR") or ROOT / ".snakemake" / "numba-cache")
+_KEY = cache_key()
+if _BASE.name != _KEY:  # (a child process inherits the keyed directory)
+    os.environ["NUMBA_CACHE_DIR"] = str(_BASE / _KEY)
 
 import numba  # noqa: E402  (after NUMBA_CACHE_DIR: numba reads it at import)
 from numba.extending import overload  # noqa: E402
@@ -46,8 +73,9 @@ def _broadcast_scalars(*outs):
 
 
 def njit(fn):
-    """``numba.njit(cache=True)``: strict IEEE arithmetic (no fastmath), cached on disk."""
-    return numba.njit(cache=True)(fn)
+    """``numba.njit(cache=True)``: strict IEEE arithmetic (no fastmath) with numpy's error
+    model (x / 0 is inf or NaN, as in the numpy code, not ZeroDivisionError), cached on disk."""
+    return numba.njit(cache=True, error_model="numpy")(fn)
 
 
 # the generated functions the kernels call (scalar in, tuple of floats out)

@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
+from pipeline.altimeter_attitude import jit
 from pipeline.altimeter_attitude.columns import (
     RMS_SUMMARY_COLUMNS,
     RUN_RMS_COLUMNS,
@@ -32,9 +33,9 @@ from pipeline.altimeter_attitude.columns import (
     WINDOW_SUMMARY_COLUMNS,
 )
 from pipeline.altimeter_attitude.estimates import Estimates
-from pipeline.altimeter_attitude.metrics import RAD2DEG, angle_errors
+from pipeline.altimeter_attitude.metrics import RAD2DEG
 from pipeline.altimeter_attitude.trajectory import Truth
-from pipeline.altimeter_attitude.trouble import estimates_trouble
+from pipeline.altimeter_attitude.trouble import DIVERGED_DEG, TROUBLE_KINDS
 from pipeline.altimeter_attitude.windows import Window
 
 __all__ = ["BLOCK_RUNS", "FilterSums", "MonteCarloSums"]
@@ -44,6 +45,55 @@ __all__ = ["BLOCK_RUNS", "FilterSums", "MonteCarloSums"]
 BLOCK_RUNS = 256
 
 _SQUARES = ("er2", "ep2", "rs2", "ps2", "nees_r", "nees_p", "c1", "c2", "c3", "n2")
+
+
+@jit.njit
+def _accumulate(
+    roll, pitch, rs, ps, c, ne, t_roll, t_pitch, t_c, firsts, far, block, run_ms, flags, any_sigma
+):
+    """One pass over a block's histories (N, T + 1): per state time the sums over runs (in
+    run order, as numpy's sum over axis 0) of _SQUARES into ``block``; per run and window
+    start the mean square error ``run_ms`` (N, F, 2); per run the trouble kinds ``flags``
+    (non-finite, diverged beyond ``far`` rad, sigma not positive); ``any_sigma`` = (some roll
+    sigma not NaN, some roll or pitch sigma not NaN). Errors wrapped as metrics.angle_errors:
+    e = (est - true + pi) mod 2 pi - pi."""
+    n, t1 = roll.shape
+    pi, two_pi = np.pi, 2 * np.pi
+    for i in range(n):
+        for k in range(t1):
+            er = (roll[i, k] - t_roll[k] + pi) % two_pi - pi
+            ep = (pitch[i, k] - t_pitch[k] + pi) % two_pi - pi
+            sr, sp = rs[i, k], ps[i, k]
+            qr, qp = er / sr, ep / sp
+            d0, d1, d2 = c[i, k, 0] - t_c[k, 0], c[i, k, 1] - t_c[k, 1], c[i, k, 2] - t_c[k, 2]
+            block[0, k] += er * er
+            block[1, k] += ep * ep
+            block[2, k] += sr * sr
+            block[3, k] += sp * sp
+            block[4, k] += qr * qr
+            block[5, k] += qp * qp
+            block[6, k] += d0 * d0
+            block[7, k] += d1 * d1
+            block[8, k] += d2 * d2
+            block[9, k] += ne[i, k] * ne[i, k]
+            for j in range(firsts.shape[0]):
+                if k >= firsts[j]:
+                    run_ms[i, j, 0] += er * er
+                    run_ms[i, j, 1] += ep * ep
+            if not (math.isfinite(roll[i, k]) and math.isfinite(pitch[i, k])):
+                flags[i, 0] = True
+            if (math.isfinite(er) and abs(er) > far) or (math.isfinite(ep) and abs(ep) > far):
+                flags[i, 1] = True
+            if not (math.isfinite(sr) and sr > 0.0 and math.isfinite(sp) and sp > 0.0):
+                flags[i, 2] = True
+            if not math.isnan(sr):
+                any_sigma[0] = True
+                any_sigma[1] = True
+            elif not math.isnan(sp):
+                any_sigma[1] = True
+        for j in range(firsts.shape[0]):
+            run_ms[i, j, 0] /= t1 - firsts[j]
+            run_ms[i, j, 1] /= t1 - firsts[j]
 
 
 @dataclass
@@ -56,46 +106,36 @@ class FilterSums:
     sums: dict[str, np.ndarray] = field(default_factory=dict)
     run_rms: dict[int, list[np.ndarray]] = field(default_factory=dict)  # first -> [(n, 2)]
     trouble: dict[str, int] = field(default_factory=dict)
-    sigma_blocks: int = 0  # blocks in which some sigma is not NaN
+    sigma_blocks: int = 0  # blocks in which some roll sigma is not NaN
+    nan_sigma_runs: int = 0  # runs of blocks whose roll and pitch sigmas are all NaN
 
-    def add(self, est: Estimates, truth: Truth, firsts: tuple[int, ...], run_kind: str) -> None:
-        er, ep = angle_errors(est, truth)
-        if er.shape[1] != self.n_times:
-            raise ValueError(f"{est.filter}: {er.shape[1]} state times, expected {self.n_times}")
-        c_err = est.c - truth.c[None]
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            parts = {
-                "er2": er**2,
-                "ep2": ep**2,
-                "rs2": est.roll_sigma**2,
-                "ps2": est.pitch_sigma**2,
-                "nees_r": (er / est.roll_sigma) ** 2,
-                "nees_p": (ep / est.pitch_sigma) ** 2,
-                "c1": c_err[..., 0] ** 2,
-                "c2": c_err[..., 1] ** 2,
-                "c3": c_err[..., 2] ** 2,
-                "n2": est.norm_error**2,
-            }
-        for key in _SQUARES:
-            s = parts[key].sum(axis=0)
-            self.sums[key] = s if key not in self.sums else self.sums[key] + s
-        for first in firsts:
-            rms = np.stack(
-                [
-                    np.sqrt(np.mean(er[:, first:] ** 2, axis=1)),
-                    np.sqrt(np.mean(ep[:, first:] ** 2, axis=1)),
-                ],
-                -1,
-            )
-            self.run_rms.setdefault(first, []).append(RAD2DEG * rms)
-        has_sigma = not np.all(np.isnan(est.roll_sigma))
-        self.sigma_blocks += has_sigma
-        for row in estimates_trouble(est, truth, run_kind):
-            kind, n_aff = row[3], row[5]
-            if kind == "sigma_not_positive" and not has_sigma:
-                n_aff = est.roll.shape[0]  # every sigma NaN: bad, unless no block has one
-            self.trouble[kind] = self.trouble.get(kind, 0) + int(n_aff)
-        self.n_runs += est.roll.shape[0]
+    def add(self, est: Estimates, truth: Truth, firsts: tuple[int, ...]) -> None:
+        n, t1 = est.roll.shape
+        if t1 != self.n_times:
+            raise ValueError(f"{est.filter}: {t1} state times, expected {self.n_times}")
+        block = np.zeros((len(_SQUARES), t1))
+        run_ms = np.zeros((n, len(firsts), 2))
+        flags = np.zeros((n, 3), dtype=bool)
+        any_sigma = np.zeros(2, dtype=bool)
+        f = np.ascontiguousarray
+        _accumulate(
+            f(est.roll), f(est.pitch), f(est.roll_sigma), f(est.pitch_sigma), f(est.c),
+            f(est.norm_error), f(truth.roll), f(truth.pitch), f(truth.c),
+            np.asarray(firsts, dtype=np.int64), np.deg2rad(DIVERGED_DEG),
+            block, run_ms, flags, any_sigma,
+        )  # fmt: skip
+        for j, key in enumerate(_SQUARES):
+            self.sums[key] = block[j] if key not in self.sums else self.sums[key] + block[j]
+        for j, first in enumerate(firsts):
+            self.run_rms.setdefault(first, []).append(RAD2DEG * np.sqrt(run_ms[:, j]))
+        self.sigma_blocks += bool(any_sigma[0])
+        # trouble.estimates_trouble: a filter whose sigmas are all NaN has no covariance
+        counts = flags.sum(axis=0)
+        if not any_sigma[1]:
+            self.nan_sigma_runs += n
+        for j, kind in enumerate(TROUBLE_KINDS):
+            self.trouble[kind] = self.trouble.get(kind, 0) + int(counts[j])
+        self.n_runs += n
 
     @property
     def has_sigma(self) -> bool:
@@ -161,7 +201,7 @@ class FilterSums:
 
     def trouble_counts(self) -> dict[str, int]:
         out = dict(self.trouble)
-        if not self.has_sigma:
+        if self.nan_sigma_runs == self.n_runs:
             out["sigma_not_positive"] = 0  # a filter without a covariance
         return out
 
@@ -190,7 +230,7 @@ class MonteCarloSums:
         sums = self.filters.get(est.filter)
         if sums is None:
             sums = self.filters[est.filter] = FilterSums(est.filter, len(self.truth.t))
-        sums.add(est, self.truth, self.firsts, self.run_kind)
+        sums.add(est, self.truth, self.firsts)
 
     def summary_frame(self) -> pd.DataFrame:
         rows = [s.summary_row(self.first) for s in self.filters.values()]

@@ -111,3 +111,31 @@ def test_first_run_offset_gives_the_same_runs(short):
         assert np.array_equal(getattr(whole, name)[2:], getattr(part, name), equal_nan=True)
     with pytest.raises(ValueError, match="first_run = -1"):
         simulate_inputs(sc.profiles, sc.sensors, sc.initial, 1, sc.seed, sc.name, first_run=-1)
+
+
+def test_trouble_counts_equal_estimates_trouble_across_blocks(short):
+    """Injected trouble (a NaN run, a run diverged beyond 45 deg, a zero sigma, a filter
+    without sigma) counted from two blocks equals estimates_trouble on the whole history."""
+    from pipeline.altimeter_attitude.estimates import Estimates
+    from pipeline.altimeter_attitude.mc_sums import MonteCarloSums
+
+    sc = short
+    inputs, est, _ = run.simulate(sc, 5, filters=("ukf", "complementary"), log=lambda m: None)
+    u = est["ukf"]
+    roll, sigma = u.roll.copy(), u.roll_sigma.copy()
+    roll[1, 100] = np.nan
+    roll[3, 200:] += np.deg2rad(60.0)
+    sigma[4, 50] = 0.0
+    bad = Estimates("ukf", roll, u.pitch, sigma, u.pitch_sigma, u.c, u.norm_error)
+    tr = inputs.truth
+    first = int(round(sc.transient * sc.sensors.rate_hz))
+    sums = MonteCarloSums(tr, first, windows.scenario_windows(sc))
+    for e in (bad, est["complementary"]):
+        for sl in (slice(0, 2), slice(2, 5)):
+            sums.add(run._split(e, sl))
+    want = estimates_trouble(bad, tr, "monte_carlo") + estimates_trouble(
+        est["complementary"], tr, "monte_carlo"
+    )
+    assert sums.trouble_rows() == want
+    counts = {r[3]: r[5] for r in want[:3]}
+    assert counts == {"non_finite": 1, "diverged": 1, "sigma_not_positive": 1}
