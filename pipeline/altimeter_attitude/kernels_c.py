@@ -64,14 +64,14 @@ def complementary_runs(gyro, accel, c0, dt, k_p, k_i):
 @jit.njit
 def linear_kf_chunk(
     x, P, exp_w, f_psi, f_xi, vertical, a43, L, g, k, dt, gc, q_diag, R, alt,
-    use_gamma, use_update, a_dt_max, c0, xs, var,
+    use_gamma, use_update, a_dt_max, c0, cs, var,
 ):  # fmt: skip
     """Advance the linear KF (eq. 31) of every run over the steps c0 .. c0 + C - 1 in place.
 
     ``x`` (M, 5), ``P`` (M, 5, 5) for M = V N (variant v of run i at v N + i); the chunk's
     ``exp_w`` (N, C, 3, 3), ``f_psi``/``f_xi`` (3, N, C, 3) (ChunkDiscretisation), ``gc``
-    (6, 5, 5) the G_ci of eq. 33, ``alt`` (N, T + 1); writes states ``xs`` (T + 1, M, 5) and
-    roll/pitch variances ``var`` (T + 1, M, 2) at steps c0 + 1 .. Returns False (and stops) if
+    (6, 5, 5) the G_ci of eq. 33, ``alt`` (N, T + 1); writes c ``cs`` (M, T + 1, 3) and the
+    roll/pitch variances ``var`` (M, T + 1, 2) at steps c0 + 1 .. Returns False (and stops) if
     some |k gamma dt| > a_dt_max (the numpy code then uses the exact exponential).
     """
     M, C = x.shape[0], exp_w.shape[1]
@@ -158,7 +158,7 @@ def linear_kf_chunk(
                     h = 0.5 * (Pm[r, s] + Pm[s, r])
                     Pm[r, s] = h
                     Pm[s, r] = h
-            xs[step + 1, m] = xm
+            cs[m, step + 1] = xm[:3]
             # roll/pitch variances: diag(J P_cc J^T), J = d(phi, theta)/dc (generated)
             J = jit.euler_jacobian_third_row(xm[0], xm[1], xm[2])
             for r in range(2):
@@ -168,5 +168,5 @@ def linear_kf_chunk(
                     for c in range(3):
                         u += J[3 * r + c] * Pm[c, b]
                     t += u * J[3 * r + b]
-                var[step + 1, m, r] = t
+                var[m, step + 1, r] = t
     return True
