@@ -8,9 +8,12 @@ outputs as a tuple of floats (scalars need no broadcasting), so a kernel can ind
 numba's on-disk cache goes to ``<base>/<key>``: ``base`` is ``NUMBA_CACHE_DIR`` if set, else
 ``.snakemake/numba-cache`` of the checkout (ignored by git, removed by ``make clean``), so no
 file is written into the source tree and a fresh clone compiles once (~20 CPU-s) on first
-use. ``key`` hashes the kernel sources, the generated module and the numba version: numba
-invalidates a cached function only when its own file changes, not when a function it calls
-does (a regenerated formula, a changed option here), so a new key starts a fresh cache.
+use. ``key`` hashes this file, the generated module and the numba version: numba invalidates a
+cached function only when its own file changes, not when a function it calls from another
+file does. The kernels (kernels_euler, kernels_c, mc_sums) call only their own module's
+functions and the compiled generated ones of this module, so a regenerated formula or a
+changed option here must start a fresh cache, and does (only files the kernels import are
+read, so the workflow's code inputs stay those of the import graph).
 """
 
 from __future__ import annotations
@@ -23,12 +26,9 @@ from pathlib import Path
 from pipeline.altimeter_attitude.scenario import ROOT
 
 _HERE = Path(__file__).resolve().parent
-#: the files whose compiled code the cache holds (any change: a fresh cache directory)
+#: the files whose change a cached kernel would not see (any change: a fresh cache directory)
 CACHE_SOURCES = (
     _HERE / "jit.py",
-    _HERE / "kernels_euler.py",
-    _HERE / "kernels_c.py",
-    _HERE / "mc_sums.py",
     ROOT / "pipeline" / "generated" / "altimeter_attitude.py",
 )
 
