@@ -17,7 +17,8 @@ time, so a loaded machine inflates them less. Three parts:
    temporary directory, as ``run.py`` does) at each ``--scaling`` size, each in a fresh child
    process: CPU seconds, peak RSS, CPU per run-step. A size whose CPU, extrapolated linearly
    from the largest measured one, exceeds ``--max-cpu-s`` is extrapolated (said so) unless
-   ``--full``.
+   ``--full``; its peak RSS is the largest size's plus the per-run growth between the two
+   largest sizes of at least one block (memory is one block's histories plus per-run rows).
 
 The targets of issue 15 are printed against the measured values: UKF >= 100x filterpy per
 (step x run); 10,000 runs in <= 5 min (CPU, one core) and < 4 GB. filterpy is a
@@ -40,6 +41,7 @@ from pathlib import Path
 import numpy as np
 
 from pipeline.altimeter_attitude import euler_filters, run
+from pipeline.altimeter_attitude.mc_sums import BLOCK_RUNS
 from pipeline.altimeter_attitude.scenario import load_scenario
 from pipeline.altimeter_attitude.sensors import Inputs, simulate_inputs
 
@@ -181,9 +183,12 @@ def scaling(scenario: Path, sizes: list[int], steps: int, max_cpu_s: float, full
             guess = m0["cpu_s"] * n / n0
             if guess > max_cpu_s:
                 rss = m0["peak_rss_gb"]
-                if len(done) > 1:  # linear in the runs, from the last two sizes
-                    n1, m1 = done[-2]
-                    rss += (m0["peak_rss_gb"] - m1["peak_rss_gb"]) * (n - n0) / (n0 - n1)
+                # the histories are one block's (BLOCK_RUNS runs): past it only the per-run
+                # rows grow; that slope from the last two sizes of at least a block
+                full_blocks = [(k, v) for k, v in done if k >= BLOCK_RUNS]
+                if len(full_blocks) > 1:
+                    (n1, m1), (n2, m2) = full_blocks[-2:]
+                    rss += max(0.0, m2["peak_rss_gb"] - m1["peak_rss_gb"]) * (n - n2) / (n2 - n1)
                 print(
                     f"   {n:7d} {guess:9.1f} {rss:12.2f} {1e6 * guess / (n * steps):12.3f}  "
                     f"EXTRAPOLATED from {n0} runs (over --max-cpu-s {max_cpu_s:g}; --full runs it)"
