@@ -50,13 +50,26 @@ def _to_estimates(name: str, cs: np.ndarray) -> Estimates:
 
 
 def run_complementary(
-    inputs: Inputs, omega_c: float, xi: float, name: str = "complementary"
+    inputs: Inputs, omega_c: float, xi: float, name: str = "complementary", compiled: bool = True
 ) -> Estimates:
-    """Run the PI complementary filter (Fig. 1) over all runs."""
+    """Run the PI complementary filter (Fig. 1) over all runs (``compiled``: in
+    :func:`kernels_c.complementary_runs`, numba; else the numpy loop below)."""
     k_i, k_p = gen.pi_gains(omega_c, xi)
     dt = inputs.dt
     phi0, theta0 = inputs.x0_euler[:, 0], inputs.x0_euler[:, 1]
     c = np.stack(gen.third_row_from_euler(phi0, theta0), -1)
+    if compiled:
+        from pipeline.altimeter_attitude import kernels_c
+
+        cs = kernels_c.complementary_runs(
+            np.ascontiguousarray(inputs.gyro, dtype=float),
+            np.ascontiguousarray(inputs.accel, dtype=float),
+            np.ascontiguousarray(c),
+            dt,
+            float(k_p),
+            float(k_i),
+        )
+        return _to_estimates(name, cs)
     z = np.zeros_like(c)
     N, T = inputs.n_runs, inputs.n_steps
     cs = np.empty((T + 1, N, 3))  # time-major while filling

@@ -67,14 +67,53 @@ def _estimates(name: str, xs: np.ndarray, Ps: np.ndarray) -> Estimates:
     )
 
 
+def _kernel_inputs(inputs: Inputs) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """gyro, accel, altimeter as C-contiguous float arrays (what the kernels take)."""
+    return tuple(
+        np.ascontiguousarray(a, dtype=float) for a in (inputs.gyro, inputs.accel, inputs.altimeter)
+    )
+
+
+def _estimates_var(name: str, xs: np.ndarray, var: np.ndarray) -> Estimates:
+    """Estimates from a kernel's states (N, T+1, 4) and roll/pitch variances (N, T+1, 2)."""
+    c = np.stack(gen.third_row_from_euler(xs[..., 0], xs[..., 1]), -1)
+    return Estimates(
+        filter=name,
+        roll=xs[..., 0],
+        pitch=xs[..., 1],
+        roll_sigma=np.sqrt(var[..., 0]),
+        pitch_sigma=np.sqrt(var[..., 1]),
+        c=c,
+        norm_error=np.zeros(xs.shape[:2]),
+    )
+
+
 def run_ukf(
-    inputs: Inputs, alpha: float, beta: float, kappa: float, name: str = "ukf"
+    inputs: Inputs,
+    alpha: float,
+    beta: float,
+    kappa: float,
+    name: str = "ukf",
+    compiled: bool = True,
 ) -> Estimates:
-    """The UKF over all runs and steps (sigma points redrawn after predict, as filterpy 2)."""
+    """The UKF over all runs and steps (sigma points redrawn after predict, as filterpy 2).
+
+    ``compiled``: :func:`kernels_euler.ukf_runs` (numba, run by run); if a covariance cannot
+    be factored there, the batched numpy loop below (the reference) reruns and names it."""
     weights = ukf.MerweWeights(n=4, alpha=alpha, beta=beta, kappa=kappa)
     dt, g, sens = inputs.dt, inputs.g, inputs.sensors
-    R = np.array([[sens.altimeter_sigma**2]])
     x, P = _initial(inputs)
+    if compiled:
+        from pipeline.altimeter_attitude import kernels_euler
+
+        xs_c, var_c, failed = kernels_euler.ukf_runs(
+            *_kernel_inputs(inputs), x, P, np.array(weights.Wm), np.array(weights.Wc),
+            weights.scale, dt, g, sens.gyro_sigma**2, sens.accel_sigma**2,
+            sens.altimeter_sigma**2, Q_FLOOR,
+        )  # fmt: skip
+        if not failed.any():
+            return _estimates_var(name, xs_c, var_c)
+    R = np.array([[sens.altimeter_sigma**2]])
     N, T = inputs.n_runs, inputs.n_steps
     xs = np.empty((T + 1, N, 4))  # time-major while filling (contiguous writes)
     Ps = np.empty((T + 1, N, 2, 2))
@@ -98,11 +137,21 @@ def run_ukf(
     return _estimates(name, np.swapaxes(xs, 0, 1), np.swapaxes(Ps, 0, 1))
 
 
-def run_ekf(inputs: Inputs, name: str = "ekf") -> Estimates:
-    """An EKF on the same model (the paper reports that it diverges; no details given)."""
+def run_ekf(inputs: Inputs, name: str = "ekf", compiled: bool = True) -> Estimates:
+    """An EKF on the same model (the paper reports that it diverges; no details given).
+
+    ``compiled``: :func:`kernels_euler.ekf_runs` (numba); else the batched numpy loop."""
     dt, g, sens = inputs.dt, inputs.g, inputs.sensors
     R = sens.altimeter_sigma**2
     x, P = _initial(inputs)
+    if compiled:
+        from pipeline.altimeter_attitude import kernels_euler
+
+        xs_c, var_c = kernels_euler.ekf_runs(
+            *_kernel_inputs(inputs), x, P, dt, g, sens.gyro_sigma**2, sens.accel_sigma**2, R,
+            Q_FLOOR,
+        )  # fmt: skip
+        return _estimates_var(name, xs_c, var_c)
     N, T = inputs.n_runs, inputs.n_steps
     xs = np.empty((T + 1, N, 4))  # time-major while filling (contiguous writes)
     Ps = np.empty((T + 1, N, 2, 2))

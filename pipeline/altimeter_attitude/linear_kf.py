@@ -75,11 +75,15 @@ def run_linear_kf(
     variants: tuple[str, ...] = ("linear_kf",),
     p0_radial: str = "second_order",
     chunk: int = 256,
+    compiled: bool = True,
 ) -> list[Estimates]:
     """Run the filter variants (keys of VARIANTS) over all runs and steps.
 
     The variants see the same inputs and are stacked along the run axis, so they cost about
     one filter. Returns one :class:`Estimates` per variant (roll/pitch, sigmas, c, 1 - c^T c).
+    ``compiled``: the step loop runs in :func:`kernels_c.linear_kf_chunk` (numba), unless a
+    step needs the exact exponential (|k gamma dt| > ChunkDiscretisation.A_DT_MAX), when the
+    numpy loop below (the reference) runs instead.
     """
     for v in variants:
         if v not in VARIANTS:
@@ -103,7 +107,12 @@ def run_linear_kf(
 
     xs[0], var[0] = x, euler_var(x, P)
     L = model.input_vector(dt, input_matrix)
-    for c0 in range(0, T, chunk):
+    done = (
+        _compiled_loop(inputs, k, x, P, L, use_gamma, use_update, chunk, var[0])
+        if compiled
+        else None
+    )
+    for c0 in range(0, 0 if done else T, chunk):  # the numpy loop (reference)
         c1 = min(T, c0 + chunk)
         gyro = np.tile(inputs.gyro[:, c0:c1], (V, 1, 1))
         accel = np.tile(inputs.accel[:, c0:c1], (V, 1, 1))
@@ -128,8 +137,11 @@ def run_linear_kf(
             P = 0.5 * (P + np.swapaxes(P, -1, -2))
             xs[step + 1] = x
             var[step + 1] = euler_var(x, P)
-    c = np.ascontiguousarray(np.swapaxes(xs[:, :, :3], 0, 1))
-    var = np.swapaxes(var, 0, 1)
+    if done:
+        c, var = done  # run-major already
+    else:
+        c = np.ascontiguousarray(np.swapaxes(xs[:, :, :3], 0, 1))
+        var = np.swapaxes(var, 0, 1)
     phi, theta = gen.euler_from_third_row(c[..., 0], c[..., 1], c[..., 2])
     out = []
     for i, name in enumerate(variants):
@@ -146,3 +158,38 @@ def run_linear_kf(
             )
         )
     return out
+
+
+def _compiled_loop(
+    inputs, k, x, P, L, use_gamma, use_update, chunk, var0
+) -> tuple[np.ndarray, np.ndarray] | None:
+    """The step loop of :func:`run_linear_kf` in numba, chunk by chunk: c (M, T + 1, 3) and
+    the roll/pitch variances (M, T + 1, 2), run-major; None if a step needs the exact
+    exponential (the numpy loop then runs instead)."""
+    from pipeline.altimeter_attitude import kernels_c
+
+    dt, g, sens = inputs.dt, inputs.g, inputs.sensors
+    q_diag = np.array([sens.gyro_sigma**2] * 3 + [sens.accel_sigma**2] * 3)
+    R = sens.altimeter_sigma**2
+    x, P = x.copy(), P.copy()
+    T, M = inputs.n_steps, x.shape[0]
+    cs = np.empty((M, T + 1, 3))
+    var = np.empty((M, T + 1, 2))
+    cs[:, 0], var[:, 0] = x[:, :3], var0
+    vertical = np.asarray(model.gen.vertical_transition(dt), dtype=float).reshape(2, 2)
+    gc = np.ascontiguousarray(model.GAMMA_COLUMNS)
+    alt = np.ascontiguousarray(inputs.altimeter)
+    for c0 in range(0, T, chunk):
+        c1 = min(T, c0 + chunk)
+        disc = model.ChunkDiscretisation(
+            *model.a_blocks(inputs.gyro[:, c0:c1], inputs.accel[:, c0:c1]), dt
+        )
+        ok = kernels_c.linear_kf_chunk(
+            x, P, np.ascontiguousarray(disc.exp_w), np.stack(disc.f_psi), np.stack(disc.f_xi),
+            vertical, float(model.A_CONSTANT[4, 3]), np.asarray(L, dtype=float), g, float(k), dt,
+            gc, q_diag, R, alt, use_gamma.astype(bool), np.asarray(use_update, dtype=bool),
+            model.ChunkDiscretisation.A_DT_MAX, c0, cs, var,
+        )  # fmt: skip
+        if not ok:
+            return None
+    return cs, var

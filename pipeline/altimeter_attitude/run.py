@@ -38,7 +38,7 @@ import argparse
 import hashlib
 import sys
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import numpy as np
@@ -55,27 +55,36 @@ from pipeline.altimeter_attitude.columns import (
     WINDOW_SUMMARY_COLUMNS,
 )
 from pipeline.altimeter_attitude.estimates import Estimates
+from pipeline.altimeter_attitude.mc_sums import BLOCK_RUNS, MonteCarloSums
 from pipeline.altimeter_attitude.scenario import ROOT, Scenario, load_scenario
 from pipeline.altimeter_attitude.sensors import Inputs, concat_inputs, simulate_inputs
 from pipeline.altimeter_attitude.trajectory import load_factor
-from pipeline.altimeter_attitude.trouble import estimates_trouble, trouble_frame
+from pipeline.altimeter_attitude.trouble import trouble_frame
 from pipeline.atomic import write_csv, write_json
 from pipeline.trouble import TROUBLE_COLUMNS
 
-__all__ = ["run_filters", "simulate", "truth_frame", "run_scenario", "main"]
+__all__ = [
+    "iter_filters",
+    "run_filters",
+    "simulate",
+    "simulate_sums",
+    "truth_frame",
+    "run_scenario",
+    "main",
+]
 
 GENERATED = ROOT / "pipeline" / "generated" / "altimeter_attitude.py"
 RAD2DEG = 180.0 / np.pi
 
 
-def run_filters(
+def iter_filters(
     sc: Scenario, inputs: Inputs, filters: tuple[str, ...] = ALTIMETER_FILTERS, log=print
-) -> dict[str, Estimates]:
-    """Run the named filters on the same inputs; returns their estimates by name."""
+) -> Iterator[Estimates]:
+    """Run the named filters on the same inputs, yielding each one's estimates as it is done
+    (the linear-KF variants share one pass); the caller may drop each before the next."""
     unknown = sorted(set(filters) - set(ALTIMETER_FILTERS))
     if unknown:
         raise ValueError(f"filters {unknown} unknown; allowed: {list(ALTIMETER_FILTERS)}")
-    out: dict[str, Estimates] = {}
     lkf = tuple(f for f in filters if f in linear_kf.VARIANTS)
     jobs: list[tuple[str, Callable[[], list[Estimates]]]] = []
     if lkf:
@@ -102,12 +111,20 @@ def run_filters(
         jobs.append(("accel_leveling", lambda: [complementary.run_accel_leveling(inputs)]))
     for label, job in jobs:
         start = time.perf_counter()
-        for est in job():
-            out[est.filter] = est
+        done = job()
         log(
             f"{sc.name}: {label}: {inputs.n_runs} runs x {inputs.n_steps} steps in "
             f"{time.perf_counter() - start:.1f} s"
         )
+        yield from done
+        del done
+
+
+def run_filters(
+    sc: Scenario, inputs: Inputs, filters: tuple[str, ...] = ALTIMETER_FILTERS, log=print
+) -> dict[str, Estimates]:
+    """Run the named filters on the same inputs; returns their estimates by name."""
+    out = {est.filter: est for est in iter_filters(sc, inputs, filters, log)}
     return {f: out[f] for f in filters}
 
 
@@ -137,6 +154,46 @@ def simulate(
     mc = {k: _split(e, slice(0, n)) for k, e in both.items()}
     nf = {k: _split(e, slice(n, n + 1)) for k, e in both.items()}
     return inputs, mc, nf
+
+
+def simulate_sums(
+    sc: Scenario,
+    n_runs: int | None = None,
+    filters: tuple[str, ...] = ALTIMETER_FILTERS,
+    log=print,
+    block: int = BLOCK_RUNS,
+) -> tuple[Inputs, MonteCarloSums, MonteCarloSums]:
+    """The Monte Carlo of :func:`simulate` in blocks of ``block`` runs, each filter's estimates
+    folded into :class:`MonteCarloSums` as soon as they are made, so memory is bounded by one
+    block whatever ``n_runs``; then the noise-free run alone (the compiled filters treat each
+    run alone; the linear KF's series length follows a batch's largest rotation, a 1e-17
+    effect). Returns (the first
+    block's inputs, for truth.csv; the Monte Carlo sums; the noise-free sums)."""
+    n = n_runs or sc.n_runs
+    if block < 1:
+        raise ValueError(f"block = {block}: must be >= 1")
+    first = int(round(sc.transient * sc.sensors.rate_hz))
+    wins = windows.scenario_windows(sc)
+    clean = simulate_inputs(sc.profiles, sc.sensors, sc.initial, 1, sc.seed, sc.name, 0.0)
+    mc = MonteCarloSums(clean.truth, first, wins, "monte_carlo", filters)
+    nf = MonteCarloSums(clean.truth, first, wins, "noise_free", filters)
+    first_inputs: Inputs | None = None
+    for start in range(0, n, block):
+        size = min(block, n - start)
+        part = simulate_inputs(
+            sc.profiles, sc.sensors, sc.initial, size, sc.seed, sc.name, first_run=start
+        )
+        if n > block:
+            log(f"{sc.name}: runs {start}-{start + size - 1} of {n}")
+        for est in iter_filters(sc, part, filters, log):
+            mc.add(est)
+        if first_inputs is None:
+            first_inputs = part
+        del part
+    for est in iter_filters(sc, clean, filters, lambda m: None):
+        nf.add(est)
+    assert first_inputs is not None
+    return first_inputs, mc, nf
 
 
 def truth_frame(inputs: Inputs) -> pd.DataFrame:
@@ -194,57 +251,40 @@ def run_scenario(
 
     sc = scenario if isinstance(scenario, Scenario) else load_scenario(scenario)
     out_dir = Path(out_dir)
-    inputs, estimates, noise_free = simulate(sc, n_runs, log=log)
-    series = pd.concat(
-        [metrics.timeseries_frame(e, inputs.truth, sc.output_every) for e in estimates.values()],
-        ignore_index=True,
-    )
-    first = int(round(sc.transient * sc.sensors.rate_hz))
-    wins = windows.scenario_windows(sc)
-    run_rms = pd.concat(
-        [metrics.run_rms_frame(e, inputs.truth, first) for e in estimates.values()],
-        ignore_index=True,
-    )
+    inputs, mc, nf = simulate_sums(sc, n_runs, log=log)
     written = {
         "rms_summary": write_csv(
-            out_dir / "rms_summary.csv", summary_frame(sc, inputs, estimates), RMS_SUMMARY_COLUMNS
+            out_dir / "rms_summary.csv", mc.summary_frame(), RMS_SUMMARY_COLUMNS
         ),
         "noise_free": write_csv(
-            out_dir / "noise_free.csv", summary_frame(sc, inputs, noise_free), RMS_SUMMARY_COLUMNS
+            out_dir / "noise_free.csv", nf.summary_frame(), RMS_SUMMARY_COLUMNS
         ),
-        "run_rms": write_csv(out_dir / "run_rms.csv", run_rms, RUN_RMS_COLUMNS),
+        "run_rms": write_csv(out_dir / "run_rms.csv", mc.run_rms_frame(), RUN_RMS_COLUMNS),
         "window_summary": write_csv(
-            out_dir / "window_summary.csv",
-            windows.summary_frame(wins, estimates, inputs.truth),
-            WINDOW_SUMMARY_COLUMNS,
+            out_dir / "window_summary.csv", mc.window_summary_frame(), WINDOW_SUMMARY_COLUMNS
         ),
         "window_run_rms": write_csv(
-            out_dir / "window_run_rms.csv",
-            windows.run_frame(wins, estimates, inputs.truth),
-            WINDOW_RUN_RMS_COLUMNS,
+            out_dir / "window_run_rms.csv", mc.window_run_frame(), WINDOW_RUN_RMS_COLUMNS
         ),
-        "timeseries": write_csv(out_dir / "timeseries.csv", series, TIMESERIES_COLUMNS),
+        "timeseries": write_csv(
+            out_dir / "timeseries.csv", mc.timeseries_frame(sc.output_every), TIMESERIES_COLUMNS
+        ),
         "truth": write_csv(out_dir / "truth.csv", truth_frame(inputs), TRUTH_COLUMNS),
         "numerical_trouble": write_csv(
             out_dir / "numerical_trouble.csv",
-            trouble_frame(
-                [
-                    row
-                    for run, ests in (("monte_carlo", estimates), ("noise_free", noise_free))
-                    for e in ests.values()
-                    for row in estimates_trouble(e, inputs.truth, run)
-                ]
-            ),
+            trouble_frame(mc.trouble_rows() + nf.trouble_rows()),
             TROUBLE_COLUMNS,
         ),
     }
+    estimates = mc.filters
+    n_total = next(iter(mc.filters.values())).n_runs
     prov = provenance(
         scenario=sc.name,
         scenario_file=_relative(sc.path),
         config_sha256=sc.config_sha256,
         generated_module=_relative(GENERATED),
         generated_sha256=_sha256_file(GENERATED),
-        seeds={"seed": sc.seed, "n_runs": inputs.n_runs},
+        seeds={"seed": sc.seed, "n_runs": n_total},
         seed_scheme="run i: numpy default_rng(SeedSequence([seed, sha256(scenario name)[:8], i]))",
         steps={"imu_rate_hz": sc.sensors.rate_hz, "n_steps": inputs.n_steps},
         filters=list(estimates),

@@ -86,11 +86,15 @@ def simulate_inputs(
     seed: int,
     name: str,
     noise_scale: float = 1.0,
+    first_run: int = 0,
 ) -> Inputs:
-    """Truth, sensor outputs and initial estimates of ``n_runs`` runs.
+    """Truth, sensor outputs and initial estimates of runs ``first_run .. first_run +
+    n_runs - 1`` (a block of a larger Monte Carlo: run i's draws depend on i alone).
 
     ``noise_scale=0`` gives noise-free sensors and exact initial estimates (tests use it).
     """
+    if first_run < 0:
+        raise ValueError(f"first_run = {first_run}: must be >= 0")
     dt = 1.0 / sensors.rate_hz
     n_steps = int(round(profiles.duration * sensors.rate_hz))
     t_state = np.arange(n_steps + 1) * dt
@@ -104,7 +108,7 @@ def simulate_inputs(
     has_alt = (np.arange(n_steps + 1) % every == 0) & (np.arange(n_steps + 1) > 0)
     key = scenario_key(name)
     for i in range(n_runs):
-        rng = np.random.default_rng(np.random.SeedSequence([seed, key, i]))
+        rng = np.random.default_rng(np.random.SeedSequence([seed, key, first_run + i]))
         gyro[i] = tr_mid.rate_b + noise_scale * sensors.gyro_sigma * rng.standard_normal(
             (n_steps, 3)
         )

@@ -1,0 +1,89 @@
+"""The generated formulas compiled with numba, for the filter kernels (scalar arguments).
+
+:mod:`pipeline.generated.altimeter_attitude` stays the one source of every formula: its
+functions are compiled here as they are (``numba.njit(gen.f, cache=True)``), not re-typed.
+They end in ``_broadcast(out0, ...)``, which in compiled code is overloaded to return the
+outputs as a tuple of floats (scalars need no broadcasting), so a kernel can index it.
+
+numba's on-disk cache goes to ``<base>/<key>``: ``base`` is ``NUMBA_CACHE_DIR`` if set, else
+``.snakemake/numba-cache`` of the checkout (ignored by git, removed by ``make clean``), so no
+file is written into the source tree and a fresh clone compiles once (~20 CPU-s) on first
+use. ``key`` hashes this file, the generated module and the numba version: numba invalidates a
+cached function only when its own file changes, not when a function it calls from another
+file does. The kernels (kernels_euler, kernels_c, mc_sums) call only their own module's
+functions and the compiled generated ones of this module, so a regenerated formula or a
+changed option here must start a fresh cache, and does (only files the kernels import are
+read, so the workflow's code inputs stay those of the import graph).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+from importlib.metadata import version
+from pathlib import Path
+
+from pipeline.altimeter_attitude.scenario import ROOT
+
+_HERE = Path(__file__).resolve().parent
+#: the files whose change a cached kernel would not see (any change: a fresh cache directory)
+CACHE_SOURCES = (
+    _HERE / "jit.py",
+    ROOT / "pipeline" / "generated" / "altimeter_attitude.py",
+)
+
+
+def cache_key() -> str:
+    digest = hashlib.sha256(f"numba {version('numba')}".encode())
+    for path in CACHE_SOURCES:
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:16]
+
+
+_BASE = Path(os.environ.get("NUMBA_CACHE_DIR") or ROOT / ".snakemake" / "numba-cache")
+_KEY = cache_key()
+if _BASE.name != _KEY:  # (a child process inherits the keyed directory)
+    os.environ["NUMBA_CACHE_DIR"] = str(_BASE / _KEY)
+
+import numba  # noqa: E402  (after NUMBA_CACHE_DIR: numba reads it at import)
+from numba.extending import overload  # noqa: E402
+
+from pipeline.generated import altimeter_attitude as gen  # noqa: E402
+
+__all__ = [
+    "accel_third_row",
+    "euler_jacobian_third_row",
+    "euler_model_rhs",
+    "euler_process_noise",
+    "euler_state_jacobian",
+    "gamma_term_closed",
+    "njit",
+    "normalisation_error",
+    "third_row_rotation",
+]
+
+
+@overload(gen._broadcast)
+def _broadcast_scalars(*outs):
+    """Compiled ``_broadcast`` of scalars: the outputs as a homogeneous tuple of floats."""
+    items = "".join(f"float(outs[{i}]), " for i in range(len(outs)))
+    namespace: dict = {}
+    exec(f"def impl(*outs):\n    return ({items})\n", namespace)
+    return namespace["impl"]
+
+
+def njit(fn):
+    """``numba.njit(cache=True)``: strict IEEE arithmetic (no fastmath) with numpy's error
+    model (x / 0 is inf or NaN, as in the numpy code, not ZeroDivisionError), cached on disk."""
+    return numba.njit(cache=True, error_model="numpy")(fn)
+
+
+# the generated functions the kernels call (scalar in, tuple of floats out)
+euler_model_rhs = njit(gen.euler_model_rhs)
+euler_process_noise = njit(gen.euler_process_noise)
+euler_state_jacobian = njit(gen.euler_state_jacobian)
+accel_third_row = njit(gen.accel_third_row)
+third_row_rotation = njit(gen.third_row_rotation)
+normalisation_error = njit(gen.normalisation_error)
+gamma_term_closed = njit(gen.gamma_term_closed)
+euler_jacobian_third_row = njit(gen.euler_jacobian_third_row)

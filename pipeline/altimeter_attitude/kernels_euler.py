@@ -1,0 +1,239 @@
+"""Compiled loops of the Euler-angle UKF and EKF (:mod:`euler_filters`), one run at a time.
+
+Each kernel runs the same algorithm, operation for operation, as the batched numpy code of
+:mod:`pipeline.altimeter_attitude.ukf` / :func:`euler_filters.run_ekf` (which stay the
+reference; tests compare the two to 1e-9), with the generated formulas of :mod:`jit`:
+
+    UKF (filterpy 2.0.0, Van der Merwe points):  X = [x, x + L_k, x - L_k],  L L^T = (lam + n) P
+        X_f = RK4(X),  x^- = sum Wm X_f,  P^- = sum Wc (X_f - x^-)(.)^T + Q,  symmetrised
+        X = points(x^-, P^-);  z^ = sum Wm X_h,  S = sum Wc (X_h - z^)^2 + R,
+        K = P_xz / S,  x = x^- + K (z - z^),  P = P^- - K S K^T,  symmetrised
+    EKF:  F = I + dt J(x),  x^- = RK4(x),  P^- = F P F^T + Q,  Joseph-form update
+
+A run whose covariance cannot be factored (Cholesky) is flagged; the caller then reruns the
+block with the numpy code, which raises :class:`ukf.NotPositiveDefiniteError` naming it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from pipeline.altimeter_attitude import jit
+
+__all__ = ["ukf_runs", "ekf_runs"]
+
+
+@jit.njit
+def _rk4(x, dt, w, f, g, out):
+    """One RK4 step of the Euler model (euler_filters.rk4_step) for one state x (4,)."""
+    k1 = jit.euler_model_rhs(x[0], x[1], x[2], x[3], w[0], w[1], w[2], f[0], f[1], f[2], g)
+    h = 0.5 * dt
+    k2 = jit.euler_model_rhs(
+        x[0] + h * k1[0], x[1] + h * k1[1], x[2] + h * k1[2], x[3] + h * k1[3],
+        w[0], w[1], w[2], f[0], f[1], f[2], g,
+    )  # fmt: skip
+    k3 = jit.euler_model_rhs(
+        x[0] + h * k2[0], x[1] + h * k2[1], x[2] + h * k2[2], x[3] + h * k2[3],
+        w[0], w[1], w[2], f[0], f[1], f[2], g,
+    )  # fmt: skip
+    k4 = jit.euler_model_rhs(
+        x[0] + dt * k3[0], x[1] + dt * k3[1], x[2] + dt * k3[2], x[3] + dt * k3[3],
+        w[0], w[1], w[2], f[0], f[1], f[2], g,
+    )  # fmt: skip
+    c = dt / 6.0
+    for a in range(4):
+        out[a] = x[a] + c * (k1[a] + 2 * k2[a] + 2 * k3[a] + k4[a])
+
+
+@jit.njit
+def _process_noise(x, dt, gyro_var, accel_var, q_floor, Q):
+    """Q = dt^2 J Sigma J^T (generated euler_process_noise) + q_floor I, into Q (4, 4)."""
+    q = jit.euler_process_noise(x[0], x[1], dt, gyro_var, accel_var)
+    for a in range(4):
+        for b in range(4):
+            Q[a, b] = q[4 * a + b]
+        Q[a, a] += q_floor
+
+
+@jit.njit
+def _cholesky(A, scale, L):
+    """Lower Cholesky factor of scale * A (4, 4) into L; False if not positive definite."""
+    n = A.shape[0]
+    for j in range(n):
+        s = scale * A[j, j]
+        for k in range(j):
+            s -= L[j, k] * L[j, k]
+        if not s > 0.0 or not math.isfinite(s):
+            return False
+        d = math.sqrt(s)
+        L[j, j] = d
+        for i in range(j + 1, n):
+            t = scale * A[i, j]
+            for k in range(j):
+                t -= L[i, k] * L[j, k]
+            L[i, j] = t / d
+        for i in range(j):
+            L[i, j] = 0.0
+    return True
+
+
+@jit.njit
+def _sigma_points(x, P, scale, L, X):
+    """X (2n+1, n) = [x, x + L[:, k], x - L[:, k]] (ukf.sigma_points); False if P is not PD."""
+    n = x.shape[0]
+    if not _cholesky(P, scale, L):
+        return False
+    for a in range(n):
+        X[0, a] = x[a]
+        for k in range(n):
+            X[1 + k, a] = x[a] + L[a, k]
+            X[1 + n + k, a] = x[a] - L[a, k]
+    return True
+
+
+@jit.njit
+def _symmetrize(P):
+    n = P.shape[0]
+    for a in range(n):
+        for b in range(a + 1, n):
+            m = 0.5 * (P[a, b] + P[b, a])
+            P[a, b] = m
+            P[b, a] = m
+
+
+@jit.njit
+def ukf_runs(gyro, accel, alt, x0, P0, wm, wc, scale, dt, g, gyro_var, accel_var, R, q_floor):
+    """The UKF over runs (N, T): (states (N, T+1, 4), roll/pitch variances (N, T+1, 2),
+    failed (N,) bool: a covariance that Cholesky could not factor)."""
+    N, T = gyro.shape[0], gyro.shape[1]
+    n, S = 4, 9
+    xs = np.empty((N, T + 1, 4))
+    var = np.empty((N, T + 1, 2))
+    failed = np.zeros(N, dtype=np.bool_)
+    L = np.zeros((n, n))
+    X = np.empty((S, n))
+    Xf = np.empty((S, n))
+    Q = np.empty((n, n))
+    x = np.empty(n)
+    P = np.empty((n, n))
+    dz = np.empty(S)
+    for i in range(N):
+        x[:] = x0[i]
+        P[:, :] = P0[i]
+        xs[i, 0] = x
+        var[i, 0, 0], var[i, 0, 1] = P[0, 0], P[1, 1]
+        for k in range(T):
+            _process_noise(x, dt, gyro_var, accel_var, q_floor, Q)
+            if not _sigma_points(x, P, scale, L, X):
+                failed[i] = True
+                break
+            for j in range(S):
+                _rk4(X[j], dt, gyro[i, k], accel[i, k], g, Xf[j])
+            for a in range(n):  # x^- = Wm X_f
+                s = 0.0
+                for j in range(S):
+                    s += wm[j] * Xf[j, a]
+                x[a] = s
+            for a in range(n):  # P^- = (X_f - x^-)^T diag(Wc) (X_f - x^-) + Q
+                for b in range(n):
+                    s = 0.0
+                    for j in range(S):
+                        s += (Xf[j, a] - x[a]) * (wc[j] * (Xf[j, b] - x[b]))
+                    P[a, b] = s + Q[a, b]
+            _symmetrize(P)
+            if not _sigma_points(x, P, scale, L, X):  # redrawn from the prior (filterpy 2)
+                failed[i] = True
+                break
+            z = alt[i, k + 1]
+            if not math.isnan(z):
+                zp = 0.0
+                for j in range(S):
+                    zp += wm[j] * X[j, 3]  # hx: the altitude h
+                s_zz = 0.0
+                for j in range(S):
+                    dz[j] = X[j, 3] - zp
+                    s_zz += dz[j] * (wc[j] * dz[j])
+                s_zz += R
+                s_inv = 1.0 / s_zz
+                y = z - zp
+                K = np.empty(n)
+                for a in range(n):
+                    pxz = 0.0
+                    for j in range(S):
+                        pxz += (X[j, a] - x[a]) * (wc[j] * dz[j])
+                    K[a] = pxz * s_inv
+                for a in range(n):
+                    x[a] = x[a] + K[a] * y
+                for a in range(n):
+                    for b in range(n):
+                        P[a, b] = P[a, b] - K[a] * (s_zz * K[b])
+                _symmetrize(P)
+            xs[i, k + 1] = x
+            var[i, k + 1, 0], var[i, k + 1, 1] = P[0, 0], P[1, 1]
+    return xs, var, failed
+
+
+@jit.njit
+def ekf_runs(gyro, accel, alt, x0, P0, dt, g, gyro_var, accel_var, R, q_floor):
+    """The EKF over runs (N, T): (states (N, T+1, 4), roll/pitch variances (N, T+1, 2))."""
+    N, T = gyro.shape[0], gyro.shape[1]
+    n = 4
+    xs = np.empty((N, T + 1, 4))
+    var = np.empty((N, T + 1, 2))
+    Q = np.empty((n, n))
+    F = np.empty((n, n))
+    FP = np.empty((n, n))
+    M = np.empty((n, n))
+    x = np.empty(n)
+    xn = np.empty(n)
+    P = np.empty((n, n))
+    K = np.empty(n)
+    for i in range(N):
+        x[:] = x0[i]
+        P[:, :] = P0[i]
+        xs[i, 0] = x
+        var[i, 0, 0], var[i, 0, 1] = P[0, 0], P[1, 1]
+        for k in range(T):
+            w, f = gyro[i, k], accel[i, k]
+            _process_noise(x, dt, gyro_var, accel_var, q_floor, Q)
+            J = jit.euler_state_jacobian(x[0], x[1], w[0], w[1], w[2], f[0], f[1], f[2])
+            for a in range(n):
+                for b in range(n):
+                    F[a, b] = (1.0 if a == b else 0.0) + dt * J[4 * a + b]
+            _rk4(x, dt, w, f, g, xn)
+            x[:] = xn
+            for a in range(n):  # P = F P F^T + Q
+                for b in range(n):
+                    s = 0.0
+                    for c in range(n):
+                        s += F[a, c] * P[c, b]
+                    FP[a, b] = s
+            for a in range(n):
+                for b in range(n):
+                    s = 0.0
+                    for c in range(n):
+                        s += FP[a, c] * F[b, c]
+                    M[a, b] = s + Q[a, b]
+            P[:, :] = M
+            z = alt[i, k + 1]
+            if not math.isnan(z):
+                S = P[3, 3] + R
+                for a in range(n):
+                    K[a] = P[a, 3] / S
+                y = z - x[3]
+                for a in range(n):
+                    x[a] = x[a] + K[a] * y
+                # Joseph form: (I - K H) P (I - K H)^T + R K K^T, H = e_3^T
+                for a in range(n):  # FP = (I - K H) P
+                    for b in range(n):
+                        FP[a, b] = P[a, b] - K[a] * P[3, b]
+                for a in range(n):
+                    for b in range(n):
+                        M[a, b] = FP[a, b] - FP[a, 3] * K[b] + R * K[a] * K[b]
+                P[:, :] = M
+            _symmetrize(P)
+            xs[i, k + 1] = x
+            var[i, k + 1, 0], var[i, k + 1, 1] = P[0, 0], P[1, 1]
+    return xs, var
