@@ -58,6 +58,12 @@ def cluster() -> None:
     pytest.skip(f"no SLURM cluster ({why}); `.ci/slurm up` starts a one-node one")
 
 
+def node_cpus() -> int:
+    """The CPUs of the cluster's smallest node (a job asking for more would wait forever)."""
+    out = subprocess.run(["sinfo", "-h", "-o", "%c"], capture_output=True, text=True, timeout=60)
+    return min(int(c.rstrip("+")) for c in out.stdout.split())
+
+
 def targets(repo: Path) -> list[str]:
     """Per paper: its equation audit and one scenario's step outputs (the published scenario,
     else the first), through that scenario's provenance file."""
@@ -91,33 +97,44 @@ def cancel_jobs_in(repo: Path) -> None:
         subprocess.run(["scancel", *ids], timeout=60, check=False)
 
 
-_STAMP = re.compile(r"^\[(\w{3} \w{3} +\d+ \d\d:\d\d:\d\d \d{4})\]$")
-_SUBMIT = re.compile(r"^Job (\S+) has been submitted with SLURM jobid (\d+)")
-_DONE = re.compile(r"^Finished job(?:id)?:? (\S+?)[ .]")
+_STAMP = re.compile(r"^\[(\w{3} \w{3} +\d+ \d\d:\d\d:\d\d \d{4})\]")
+_SUBMIT = re.compile(r"^Job \S+ has been submitted with SLURM jobid (\d+)", re.M)
+_JOBID = re.compile(r"^jobid: (\d+)$")
+_DONE = re.compile(r"^Finished jobid: (\d+) ")
 
 
 def sbatch_spans(log: str) -> dict[str, float]:
-    """Seconds from submission to the finish Snakemake saw, per SLURM job id, from the
-    timestamped lines of Snakemake's output."""
-    now, submitted, jobs, spans = None, {}, {}, {}
-    for line in log.splitlines():
-        if m := _STAMP.match(line.strip()):
+    """Seconds from each sbatch submission to the moment Snakemake saw the last of its jobs
+    finished, per SLURM job id, from the timestamped lines of Snakemake's output (a group job
+    lists its jobs' ids before it is submitted)."""
+    now, pending, members, start, end = None, [], {}, {}, {}
+    for line in (raw.strip() for raw in log.splitlines()):
+        if m := _STAMP.match(line):
             now = datetime.strptime(m[1], "%a %b %d %H:%M:%S %Y")
-        elif (m := _SUBMIT.match(line.strip())) and now:
-            submitted[m[1]], jobs[m[1]] = now, m[2]
-        elif (m := _DONE.match(line.strip())) and now and m[1] in submitted:
-            spans[jobs[m[1]]] = (now - submitted[m[1]]).total_seconds()
-    return spans
+        if "Group job" in line or line.startswith(("rule ", "localrule ")):
+            pending = []  # the jobs of the next submission follow
+        elif m := _JOBID.match(line):
+            pending.append(m[1])
+        elif m := _SUBMIT.match(line):
+            members[m[1]], start[m[1]], pending = set(pending), now, []
+        elif (m := _DONE.match(line)) and now:
+            for slurm_id, jobs in members.items():
+                if m[1] in jobs:
+                    end[slurm_id] = now
+    return {k: (end[k] - start[k]).total_seconds() for k in end if start[k]}
 
 
 def test_cluster_run_identical_to_local(cluster, workflow_run, tmp_path):
     repo = tmp_path / "repo"
     copy_without_outputs(workflow_run, repo)
+    sources = set(output_digests(repo))  # the committed files under reports/ (captions)
     wanted = targets(repo)
     groups = [f"{rule}=derivation" for rule in GROUPED]
     # targets before the options that take lists (--groups, --default-resources in the profile)
     args = [*wanted, "--profile", "profiles/slurm", "--groups", *groups]
-    args += ["--group-components", f"derivation={len(SLUGS)}", "--latency-wait", "10"]
+    # a group job asks for the cores its jobs use in parallel, at most --cores: one node's
+    args += ["--group-components", f"derivation={len(SLUGS)}", "--cores", str(node_cpus())]
+    args += ["--latency-wait", "10"]
     # first status check after 10 s, not 40 (squeue: MinJobAge 300 >= 3 x 10); no account
     args += ["--slurm-init-seconds-before-status-checks", "10", "--slurm-no-account"]
     try:
@@ -133,7 +150,7 @@ def test_cluster_run_identical_to_local(cluster, workflow_run, tmp_path):
     for target in wanted:
         assert (repo / target).is_file(), target
 
-    cluster_files = output_digests(repo)
+    cluster_files = {p: h for p, h in output_digests(repo).items() if p not in sources}
     local_files = output_digests(workflow_run)
     assert len(cluster_files) >= 3 * len(SLUGS)
     differ = sorted(p for p in cluster_files if cluster_files[p] != local_files.get(p))
