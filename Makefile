@@ -6,6 +6,8 @@
 #                   TEST_WORKERS=2 pytest-xdist workers by default, 0 for one process);
 #                   first installs the system tools the report tests drive (system-deps)
 #   make reproduce  run the Snakemake workflow    (CORES=2 by default)
+#   make reproduce-slurm  the same workflow on a SLURM cluster (profiles/slurm/: the executor
+#                   plugin submits the steps with sbatch; run it from a login node)
 #   make lint       ruff check + ruff format --check, snakefmt --check, snakemake --lint
 #   make system-deps  Debian's chromium (headless browser) and poppler-utils (pdftoppm), if missing
 #   make bench      benchmarks (altimeter_attitude filters vs filterpy; the workflow's CPU seconds
@@ -46,7 +48,7 @@ SYSTEM_TOOLS := /usr/bin/chromium /usr/bin/pdftoppm /usr/bin/pdftotext /usr/bin/
 SYSTEM_PKGS  := chromium poppler-utils
 REQUIRE_SYSTEM_DEPS ?= 0
 
-.PHONY: venv reproduce workflow snakemake-report test lint bench lock clean check-python system-deps
+.PHONY: venv reproduce reproduce-slurm check-slurm workflow snakemake-report test lint bench lock clean check-python system-deps
 
 venv: $(PROJECT_STAMP)
 
@@ -87,19 +89,38 @@ $(PROJECT_STAMP): $(STAMP) pyproject.toml
 # killed run is stale and is released, and the outputs a killed run left incomplete are rerun.
 SNAKEMAKE_RUN := PYTHONPATH=$(CURDIR) $(VENV)/bin/snakemake
 
+# How `workflow` runs the jobs: here, on CORES cores; `make reproduce-slurm` passes the profile.
+WORKFLOW_ARGS ?= --cores $(CORES)
+SLURM_PROFILE ?= profiles/slurm
+
 reproduce: $(PROJECT_STAMP)
 	@mkdir -p .snakemake
-	@flock -n -E 75 .snakemake/make-reproduce.lock $(MAKE) --no-print-directory workflow; \
+	@flock -n -E 75 .snakemake/make-reproduce.lock $(MAKE) --no-print-directory workflow \
+		WORKFLOW_ARGS="$(WORKFLOW_ARGS)"; \
 	status=$$?; if [ $$status -eq 75 ]; then \
 		echo "error: another 'make reproduce' is running in $(CURDIR); wait for it to finish" >&2; \
 	fi; exit $$status
+
+# The same workflow and the same bytes, its steps submitted with sbatch (the short ones run here,
+# on the login node: localrules). The clone and .venv must be on a filesystem the nodes share.
+reproduce-slurm: $(PROJECT_STAMP) check-slurm
+	@$(MAKE) --no-print-directory reproduce WORKFLOW_ARGS="--profile $(SLURM_PROFILE)"
+
+check-slurm:
+	@missing=""; \
+	command -v sbatch >/dev/null 2>&1 || missing="$$missing\n  sbatch, SLURM's client (run this on the cluster's login node; on Debian: apt-get install slurm-client; a one-node test cluster: .ci/slurm up)"; \
+	command -v squeue >/dev/null 2>&1 || missing="$$missing\n  squeue, SLURM's client (the status command of $(SLURM_PROFILE)/config.yaml)"; \
+	$(VENV)/bin/python -c 'import snakemake_executor_plugin_slurm, snakemake_executor_plugin_slurm_jobstep' \
+		2>/dev/null || missing="$$missing\n  snakemake-executor-plugin-slurm(-jobstep) in $(VENV) (both are in environment.lock: rm -rf $(VENV) && make venv)"; \
+	[ -f $(SLURM_PROFILE)/config.yaml ] || missing="$$missing\n  the profile $(SLURM_PROFILE)/config.yaml"; \
+	if [ -n "$$missing" ]; then printf "error: make reproduce-slurm needs:$$missing\n" >&2; exit 1; fi
 
 workflow:
 	@if [ -n "$$(ls -A .snakemake/locks 2>/dev/null)" ]; then \
 		echo "a Snakemake lock from an interrupted run is left: releasing it"; \
 		$(SNAKEMAKE_RUN) --unlock --quiet; \
 	fi
-	$(SNAKEMAKE_RUN) --cores $(CORES) --rerun-incomplete \
+	$(SNAKEMAKE_RUN) $(WORKFLOW_ARGS) --rerun-incomplete \
 		--rerun-triggers mtime params input code software-env --printshellcmds
 	@$(MAKE) --no-print-directory snakemake-report
 

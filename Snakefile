@@ -48,3 +48,8 @@ rule all:
         [paper_targets(slug) for slug in PAPERS],
         rules.reproduction_html.output,
         rules.reproduction_pdf.output,
+
+
+# Under a cluster executor (`make reproduce-slurm`) the targets and the steps that take seconds
+# run here, on the login node: submitting one costs more than running it (common.smk).
+workflow.localrules(*local_rules(workflow.rules))

@@ -1,6 +1,7 @@
 # Shared set-up: config validation, the paper registry, input functions and report tags.
 # Nothing here names a paper: every paper comes from config["papers"] through pipeline.registry.
 import os
+import re
 import sys
 from pathlib import Path
 
@@ -17,6 +18,7 @@ sys.path.insert(0, workflow.basedir)
 
 from pipeline.code_inputs import module_closure, notebook_imports, script_imports  # noqa: E402
 from pipeline.config import ConfigError  # noqa: E402
+from pipeline.job_resources import ResourceTable  # noqa: E402
 from pipeline.registry import check_workflow  # noqa: E402
 
 try:
@@ -38,6 +40,56 @@ ENV = "../envs/inertial-repro.yaml"
 # Captions of the outputs tagged for `snakemake --report` (reStructuredText, Jinja-templated).
 CAPTIONS = "../../reports/snakemake"
 SCRIPTS = "pipeline/scripts"
+# Each job's threads, mem_mb and runtime (minutes) on a cluster, from measured peaks
+# (config/job_resources.csv, written by `python -m pipeline.job_resources`); a job not in it
+# gets the profile's default resources. Locally they only inform the scheduler.
+JOB_RESOURCES = ResourceTable.load(Path(workflow.basedir) / "config" / "job_resources.csv")
+
+
+def benchmark_job(benchmark):
+    """The job name of a rule's benchmark file in config/job_resources.csv: its path below
+    results/ without ``benchmarks/`` and ``.tsv`` (wildcards unexpanded: ``{paper}/derive``,
+    ``north_finding/simulate_{scenario}``, ``reproduction_html``)."""
+    rel = str(benchmark).removeprefix(f"{RESULTS}/").removesuffix(".tsv")
+    # a rule's own benchmark path carries its wildcard constraints: {paper,north_finding|...}
+    return re.sub(r"\{(\w+),[^{}]*\}", r"{\1}", rel.replace("benchmarks/", ""))
+
+
+def job_threads(benchmark):
+    """The threads of the rule whose benchmark file is ``benchmark`` (1 if unmeasured)."""
+    job = benchmark_job(benchmark)
+
+    def threads(wildcards):
+        request = JOB_RESOURCES.request(job, dict(wildcards.items()))
+        return request.threads if request else 1
+
+    return threads
+
+
+def job_resources(benchmark):
+    """``mem_mb`` and ``runtime`` (minutes) for a rule's ``resources:`` (see job_threads);
+    None (the profile's default resources) if unmeasured."""
+    job = benchmark_job(benchmark)
+
+    def pick(name):
+        def value(wildcards):
+            request = JOB_RESOURCES.request(job, dict(wildcards.items()))
+            return getattr(request, name) if request else None
+
+        return value
+
+    return {"mem_mb": pick("mem_mb"), "runtime": pick("runtime")}
+
+
+def local_rules(rules):
+    """The names of the rules that run on the login node under a cluster executor: the targets
+    (no benchmark) and the rules whose every measured job needed less than LOCAL_MAX_S CPU seconds
+    (pipeline.job_resources)."""
+    return [
+        r.name
+        for r in rules
+        if not r.benchmark or JOB_RESOURCES.is_local(benchmark_job(r.benchmark))
+    ]
 
 
 def code(*modules, script=None):

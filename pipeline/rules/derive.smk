@@ -14,6 +14,9 @@ rule derive:
         f"{RESULTS}/{{paper}}/benchmarks/derive.tsv"
     conda:
         ENV
+    threads: job_threads(f"{RESULTS}/{{paper}}/benchmarks/derive.tsv")
+    resources:
+        **job_resources(f"{RESULTS}/{{paper}}/benchmarks/derive.tsv"),
     params:
         audit=lambda wildcards: PAPERS[wildcards.paper].audit_module,
         generator=lambda wildcards: PAPERS[wildcards.paper].generator_module,
@@ -35,6 +38,9 @@ rule codegen_check:
         f"{RESULTS}/{{paper}}/benchmarks/codegen_check.tsv"
     conda:
         ENV
+    threads: job_threads(f"{RESULTS}/{{paper}}/benchmarks/codegen_check.tsv")
+    resources:
+        **job_resources(f"{RESULTS}/{{paper}}/benchmarks/codegen_check.tsv"),
     script:
         "../scripts/codegen_check.py"
 
@@ -57,6 +63,9 @@ rule audit:
         f"{RESULTS}/{{paper}}/benchmarks/audit.tsv"
     conda:
         ENV
+    threads: job_threads(f"{RESULTS}/{{paper}}/benchmarks/audit.tsv")
+    resources:
+        **job_resources(f"{RESULTS}/{{paper}}/benchmarks/audit.tsv"),
     script:
         "../scripts/equation_audit.py"
 
@@ -79,5 +88,8 @@ rule notebook:
         f"{RESULTS}/{{paper}}/benchmarks/notebook.tsv"
     conda:
         ENV
+    threads: job_threads(f"{RESULTS}/{{paper}}/benchmarks/notebook.tsv")
+    resources:
+        **job_resources(f"{RESULTS}/{{paper}}/benchmarks/notebook.tsv"),
     script:
         "../scripts/execute_notebook.py"

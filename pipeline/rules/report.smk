@@ -15,6 +15,9 @@ rule reproduction_html:
         f"{RESULTS}/benchmarks/reproduction_html.tsv"
     conda:
         ENV
+    threads: job_threads(f"{RESULTS}/benchmarks/reproduction_html.tsv")
+    resources:
+        **job_resources(f"{RESULTS}/benchmarks/reproduction_html.tsv"),
     script:
         "../scripts/reproduction_report.py"
 
@@ -32,5 +35,8 @@ rule reproduction_pdf:
         f"{RESULTS}/benchmarks/reproduction_pdf.tsv"
     conda:
         ENV
+    threads: job_threads(f"{RESULTS}/benchmarks/reproduction_pdf.tsv")
+    resources:
+        **job_resources(f"{RESULTS}/benchmarks/reproduction_pdf.tsv"),
     script:
         "../scripts/reproduction_pdf.py"

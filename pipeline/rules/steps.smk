@@ -21,6 +21,9 @@ for _paper in PAPERS.values():
                 scenario="|".join(_ctx.scenarios),
             conda:
                 ENV
+            threads: job_threads(step_log(_paper, _step, "benchmarks"))
+            resources:
+                **job_resources(step_log(_paper, _step, "benchmarks")),
             params:
                 **_step.params(_ctx),
                 entry=_step.entry,
