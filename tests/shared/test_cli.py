@@ -194,6 +194,8 @@ def test_north_finding_estimate_matches_the_library(tmp_path):
     assert len(got) >= 20 and set(got["method"]) == set(raw["methods"])
     np.testing.assert_array_equal(got["estimate"].to_numpy(), lib["estimate"].to_numpy(float))
     rows = [line.split() for line in r.stdout.splitlines()[1:]]
-    assert [(row[0], row[1]) for row in rows] == list(zip(lib["method"], lib["quantity"], strict=True))
+    assert [(row[0], row[1]) for row in rows] == list(
+        zip(lib["method"], lib["quantity"], strict=True)
+    )
     printed = np.array([float(row[2]) for row in rows])  # method quantity estimate [flag]
     np.testing.assert_allclose(printed, lib["estimate"].to_numpy(float), rtol=1e-6, atol=0)
