@@ -20,7 +20,7 @@ rule is. CPU time, not wall time, decides it: on a shared machine the wall time 
 mostly the load of the others. The sizes are the shipped scenarios'; a user who raises the number of trials
 measures again (the command above) or raises ``runtime``/``mem_mb`` in the profile.
 
->>> r = derive_row("north_finding/simulate_paper", wall_s=20.0, rss_mb=300.0, cpu_s=19.0)
+>>> r = derive_row("some_paper/simulate_paper", wall_s=20.0, rss_mb=300.0, cpu_s=19.0)
 >>> (r.threads, r.mem_mb, r.runtime, r.local)
 (1, 600, 5, False)
 >>> derive_row("x/y", wall_s=1.0, rss_mb=10.0, cpu_s=0.5).mem_mb
@@ -63,7 +63,7 @@ COLUMNS = ["job", "threads", "mem_mb", "runtime", "local", "wall_s", "peak_rss_m
 @dataclass(frozen=True)
 class JobResources:
     """One job's request (``job``: its benchmark path below the results directory, without
-    ``benchmarks/`` and ``.tsv``, e.g. ``north_finding/simulate_paper``) and what it was from."""
+    ``benchmarks/`` and ``.tsv``, e.g. ``some_paper/simulate_paper``) and what it was from."""
 
     job: str
     threads: int
@@ -154,7 +154,7 @@ def read_table(path: Path) -> dict[str, JobResources]:
 
 class ResourceTable:
     """The rules' view of the table: the request of a job named by its benchmark template
-    (``{paper}/derive``, ``north_finding/simulate_{scenario}``) and its wildcards."""
+    (``{paper}/derive``, ``some_paper/simulate_{scenario}``) and its wildcards."""
 
     def __init__(self, table: dict[str, JobResources]) -> None:
         self.table = table
