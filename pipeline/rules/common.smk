@@ -68,13 +68,15 @@ def job_threads(benchmark):
 
 def job_resources(benchmark):
     """``mem_mb`` and ``runtime`` (minutes) for a rule's ``resources:`` (see job_threads);
-    None (the profile's default resources) if unmeasured."""
+    none for a rule with no measured job (a new paper's step): the profile's default resources
+    apply. A measured rule's new wildcard value gets the largest of its measured requests."""
     job = benchmark_job(benchmark)
+    if not JOB_RESOURCES.matching(job):
+        return {}
 
     def pick(name):
         def value(wildcards):
-            request = JOB_RESOURCES.request(job, dict(wildcards.items()))
-            return getattr(request, name) if request else None
+            return getattr(JOB_RESOURCES.request(job, dict(wildcards.items())), name)
 
         return value
 
