@@ -68,8 +68,9 @@ def job_threads(benchmark):
 
 def job_resources(benchmark):
     """``mem_mb`` and ``runtime`` (minutes) for a rule's ``resources:`` (see job_threads);
-    none for a rule with no measured job (a new paper's step): the profile's default resources
-    apply. A measured rule's new wildcard value gets the largest of its measured requests."""
+    none when no job of the rule was measured (a new paper's step), so that the profile's
+    default resources apply. A new wildcard value of a measured rule gets the largest of its
+    measured requests."""
     job = benchmark_job(benchmark)
     if not JOB_RESOURCES.matching(job):
         return {}
