@@ -20,7 +20,8 @@ Input CSV (one row per IMU sample, header required, comma separated)::
     accel_y_m_s2
     accel_z_m_s2
     altimeter_m    barometric altitude (up), m; empty where there is no sample. The
-                   altimeter must sample every n-th IMU row (n inferred and checked)
+                   altimeter must sample every n-th IMU row (n inferred and checked); a
+                   value held on every row until the next sample: --altimeter-held yes
 
 Other names and units: --columns QUANTITY=COLUMN[:UNIT],... with QUANTITY one of t,
 gyro_x, gyro_y, gyro_z, accel_x, accel_y, accel_z, altimeter and UNIT s|ms|us (t),
@@ -78,6 +79,7 @@ from pipeline.altimeter_attitude import complementary, euler_filters, linear_kf
 from pipeline.altimeter_attitude.columns import FLIGHTLOG_OUTPUT_COLUMNS
 from pipeline.altimeter_attitude.estimates import Estimates
 from pipeline.altimeter_attitude.flightlog_format import (
+    HELD_MODES,
     STAMPS,
     FlightLog,
     FlightLogError,
@@ -259,6 +261,14 @@ def _parser(prog: str | None = None) -> argparse.ArgumentParser:
     p.add_argument("--columns", default="", help="QUANTITY=COLUMN[:UNIT],... (see above)")
     p.add_argument("--format", type=Path, help="YAML/JSON file with columns and stamp")
     p.add_argument(
+        "--altimeter-held",
+        choices=HELD_MODES,
+        default="check",
+        help="an altimeter value repeated on every row until the next sample: 'check' "
+        "(default) refuses a column repeating the value before on half its rows, 'yes' keeps "
+        "the first row of each hold, 'no' takes every value as a sample",
+    )
+    p.add_argument(
         "--stamp",
         choices=STAMPS,
         help="IMU sample stamped at its interval's start (default) or end",
@@ -352,7 +362,7 @@ def main(argv: list[str] | None = None, prog: str | None = None) -> int:
             mapping, stamp = load_format(args.format)
         mapping.update(parse_columns(args.columns))
         stamp = args.stamp or stamp or "start"
-        log = read_log(args.log, mapping, args.max_jitter)
+        log = read_log(args.log, mapping, args.max_jitter, args.altimeter_held)
         if args.k_per_s * log.dt > MAX_K_DT:
             raise FlightLogError(
                 f"--k-per-s = {args.k_per_s:g}: k dt = {args.k_per_s * log.dt:g} at the log's "

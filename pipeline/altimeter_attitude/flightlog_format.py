@@ -37,6 +37,7 @@ __all__ = [
     "QUANTITIES",
     "UNITS",
     "STAMPS",
+    "HELD_MODES",
     "FlightLogError",
     "FlightLog",
     "parse_columns",
@@ -61,6 +62,13 @@ SUFFIXES = {
     "altimeter": {"_m": "m", "_ft": "ft"},
 }
 STAMPS = ("start", "end")
+# --altimeter-held: a logger that writes the last altimeter value on every IMU row (sample and
+# hold) repeats it until the next sample. 'check' refuses a column whose values repeat the row
+# before on at least HELD_FRACTION of its samples (a real altimeter's noise rarely repeats a
+# value exactly); 'yes' keeps the first row of each held run as the sample (the hold period n
+# inferred, every n-th row from the first change); 'no' takes every value as a fresh sample.
+HELD_MODES = ("check", "yes", "no")
+HELD_FRACTION = 0.5
 MAX_LISTED = 5  # rows quoted in an error message
 
 
@@ -172,6 +180,7 @@ class FlightLog:
     every: int  # altimeter every n-th row
     columns: dict[str, tuple[str, str]]  # quantity -> (column, unit) as used
     max_step_dev: float  # largest |step - dt| / dt
+    held: int = 0  # the hold period in rows of a sample-and-hold altimeter column (0: not held)
 
     @property
     def duration(self) -> float:
@@ -183,7 +192,10 @@ class FlightLog:
             f"{self.path}: {len(self.t)} rows, {self.duration:.6g} s; IMU {1 / self.dt:.6g} Hz "
             f"(dt {self.dt:.6g} s, largest step deviation {self.max_step_dev:.2%}, no gaps); "
             f"altimeter {1 / (self.dt * self.every):.6g} Hz (every {self.every} rows, {n_alt} "
-            "samples); columns " + ", ".join(f"{q}={c}[{u}]" for q, (c, u) in self.columns.items())
+            "samples"
+            + ("; held values dropped, first row of each hold kept" if self.held else "")
+            + "); columns "
+            + ", ".join(f"{q}={c}[{u}]" for q, (c, u) in self.columns.items())
         )
 
 
@@ -229,8 +241,72 @@ def _resolve(frame: pd.DataFrame, path: Path, mapping: dict) -> dict[str, tuple[
     return used
 
 
-def read_log(path: str | Path, columns: dict | None = None, max_jitter: float = 0.01) -> FlightLog:
-    """Parse and check a flight log (``columns`` from :func:`parse_columns`)."""
+def _hold_period(rows: np.ndarray, values: np.ndarray) -> tuple[int, str]:
+    """(n, "") when the values change only every multiple of n >= 2 rows (a hold of n rows),
+    else (0, what was found)."""
+    changes = rows[1:][values[1:] != values[:-1]]
+    spacing = np.diff(changes)
+    if spacing.size == 0:
+        return 0, "fewer than 3 changes of value"
+    n = int(spacing.min())
+    if n < 2:
+        return 0, f"a change of value on consecutive rows ({_rows(changes[1:][spacing < 2])})"
+    if np.any(spacing % n):
+        bad = changes[1:][spacing % n != 0]
+        return 0, f"changes every {n} rows (smallest spacing), but at rows {_rows(bad)} off it"
+    return n, ""
+
+
+def _unhold(alt: np.ndarray, path: Path, col: str, mode: str) -> tuple[np.ndarray, int]:
+    """The altimeter column with held repeats made empty, and the hold period (0: not held).
+
+    'check' refuses a column with a value on every row that repeats the row before on at least
+    HELD_FRACTION of them and changes only with a fixed period (a noise-free altitude that is
+    constant in level flight changes on consecutive rows in a climb: not a hold).
+
+    >>> a = np.repeat([1.0, 1.5, 1.5, 2.0, 2.5], 3)[1:]  # held 3 rows; one new sample repeats
+    >>> out, n = _unhold(a, Path("log.csv"), "alt_m", "yes")
+    >>> n, np.flatnonzero(np.isfinite(out)).tolist()
+    (3, [2, 5, 8, 11])
+    """
+    if mode not in HELD_MODES:
+        raise FlightLogError(f"--altimeter-held = {mode!r}: allowed: {', '.join(HELD_MODES)}")
+    rows = np.flatnonzero(np.isfinite(alt))
+    if mode == "no" or rows.size < 2:
+        return alt, 0
+    values = alt[rows]
+    n, found = _hold_period(rows, values)
+    if mode == "check":
+        repeats = int(np.count_nonzero(values[1:] == values[:-1]))
+        if n and rows.size == alt.size and repeats >= HELD_FRACTION * (rows.size - 1):
+            raise FlightLogError(
+                f"{path}: column {col} repeats its value before on {repeats} of "
+                f"{rows.size - 1} values and changes only every {n} rows: a sample-and-hold "
+                "altimeter written on every row? --altimeter-held yes keeps the first row of "
+                "each hold as the sample; --altimeter-held no takes every value as a fresh "
+                "sample; or leave the cells empty where there is no new sample"
+            )
+        return alt, 0
+    if not n:
+        raise FlightLogError(
+            f"{path}: --altimeter-held yes: column {col} shows {found}; allowed: a column "
+            "whose value changes only every n-th row, n >= 2 fixed"
+        )
+    first = rows[1:][values[1:] != values[:-1]][0]
+    keep = rows[(rows - first) % n == 0]
+    out = np.full_like(alt, np.nan)
+    out[keep] = alt[keep]
+    return out, n
+
+
+def read_log(
+    path: str | Path,
+    columns: dict | None = None,
+    max_jitter: float = 0.01,
+    altimeter_held: str = "check",
+) -> FlightLog:
+    """Parse and check a flight log (``columns`` from :func:`parse_columns`;
+    ``altimeter_held`` one of :data:`HELD_MODES`, see there)."""
     path = Path(path)
     try:
         data = path.read_bytes()
@@ -294,9 +370,9 @@ def read_log(path: str | Path, columns: dict | None = None, max_jitter: float = 
             f"and every step must be within {max_jitter:.3g} of it (--max-jitter); gaps or "
             f"jitter before data rows {_rows(off + 1, steps[off], ' s')}"
         )
-    alt = si["altimeter"]
-    rows = np.flatnonzero(np.isfinite(alt))
     a_col = used["altimeter"][0]
+    alt, held = _unhold(si["altimeter"], path, a_col, altimeter_held)
+    rows = np.flatnonzero(np.isfinite(alt))
     if rows.size < 2:
         raise FlightLogError(f"{path}: column {a_col} has {rows.size} samples; need at least 2")
     gaps = np.diff(rows)
@@ -317,4 +393,5 @@ def read_log(path: str | Path, columns: dict | None = None, max_jitter: float = 
         every=every,
         columns=used,
         max_step_dev=float(dev.max()),
+        held=held,
     )

@@ -185,3 +185,33 @@ def test_gaps_and_jitter_are_refused_naming_the_rows(noisy, tmp_path, capsys):
     assert sim.run(jit_log, out, "--filters", "linear_kf", "--max-jitter", "0.05") == 0
     assert "largest step deviation 3.00%" in capsys.readouterr().err
     assert _worst(sim.errors(out, inp, "linear_kf")) < CONSISTENT
+
+
+def test_a_held_altimeter_is_refused_or_unheld_to_the_sparse_log(noisy, tmp_path, capsys):
+    """A logger writing the last altimeter value on every row (20 Hz held over 100 Hz rows):
+    refused by default naming the repeats; with --altimeter-held yes the estimates are byte for
+    byte those of the same log with the altimeter only on its sample rows; 'no' runs it as a
+    100 Hz altimeter; a hold that breaks its period is refused naming the row."""
+    inp, log = noisy
+    frame = pd.read_csv(log)
+    held = frame.assign(altimeter_m=frame["altimeter_m"].ffill())
+    held_log = sim.write(held, tmp_path / "held.csv")
+    out, ref = tmp_path / "att.csv", tmp_path / "ref.csv"
+    assert sim.run(held_log, out, "--filters", "linear_kf,ukf") == 2
+    err = capsys.readouterr().err
+    repeats = int((held["altimeter_m"].diff() == 0).sum())  # 9600 held, 1 level-start repeat
+    assert f"column altimeter_m repeats its value before on {repeats} of 12000 values" in err
+    assert "changes only every 5 rows" in err
+    assert "--altimeter-held yes" in err and not out.exists()
+    assert sim.run(held_log, out, "--filters", "linear_kf,ukf", "--altimeter-held", "yes") == 0
+    err = capsys.readouterr().err
+    assert "altimeter 20 Hz (every 5 rows, 2401 samples; held values dropped" in err
+    assert sim.run(log, ref, "--filters", "linear_kf,ukf") == 0
+    assert out.read_bytes() == ref.read_bytes()
+    assert sim.run(held_log, out, "--filters", "linear_kf", "--altimeter-held", "no") == 0
+    assert "altimeter 100 Hz (every 1 rows" in capsys.readouterr().err
+    broken = held.copy()
+    broken.loc[6001:6004, "altimeter_m"] = broken.loc[6000, "altimeter_m"] + 0.25  # a 1-row hold
+    broken_log = sim.write(broken, tmp_path / "broken.csv")
+    assert sim.run(broken_log, out, "--filters", "linear_kf", "--altimeter-held", "yes") == 2
+    assert "a change of value on consecutive rows (6002)" in capsys.readouterr().err
