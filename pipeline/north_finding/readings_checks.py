@@ -166,7 +166,7 @@ def flag_notes(
         estimates["method"],
         estimates["quantity"],
         estimates["estimate"],
-        estimates["flag"].fillna(""),
+        estimates["flag"].astype(object).where(estimates["flag"].notna(), ""),
         strict=True,
     ):
         for f in str(flags).split(";"):
