@@ -91,6 +91,10 @@ SNAKEMAKE_RUN := PYTHONPATH=$(CURDIR) $(VENV)/bin/snakemake
 
 # How `workflow` runs the jobs: here, on CORES cores; `make reproduce-slurm` passes the profile.
 WORKFLOW_ARGS ?= --cores $(CORES)
+# CONFIG=my.yaml: your settings over config/config.yaml (Snakemake's --configfile), checked
+# strictly by pipeline/check_config.py before Snakemake reads them
+CONFIG ?=
+CONFIG_ARGS := $(if $(strip $(CONFIG)),--configfile $(CONFIG))
 SLURM_PROFILE ?= profiles/slurm
 
 reproduce: $(PROJECT_STAMP)
@@ -120,7 +124,8 @@ workflow:
 		echo "a Snakemake lock from an interrupted run is left: releasing it"; \
 		$(SNAKEMAKE_RUN) --unlock --quiet; \
 	fi
-	$(SNAKEMAKE_RUN) $(WORKFLOW_ARGS) --rerun-incomplete \
+	$(if $(strip $(CONFIG)),PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.check_config $(CONFIG))
+	$(SNAKEMAKE_RUN) $(WORKFLOW_ARGS) $(CONFIG_ARGS) --rerun-incomplete \
 		--rerun-triggers mtime params input code software-env --printshellcmds
 	@$(MAKE) --no-print-directory snakemake-report
 
@@ -128,20 +133,21 @@ workflow:
 # a tagged output or log under results/ or reports/, its captions, the rules and scripts it
 # lists, the config, or the run metadata (runtimes) a job writes. Written to a temporary file
 # in reports/ and renamed over the old one, so an interrupted report leaves the old one whole.
+# With CONFIG= it is always rebuilt (the config it shows may differ from the last run's).
 SNAKEMAKE_REPORT := reports/snakemake.html
 REPORT_SOURCES   := Snakefile config pipeline/rules pipeline/scripts results reports \
 	.snakemake/metadata
 
 snakemake-report:
 	@newer="$$(find $(REPORT_SOURCES) -type f -newer $(SNAKEMAKE_REPORT) \
-		! -path $(SNAKEMAKE_REPORT) ! -name '.snakemake-report.*' -print -quit 2>/dev/null)"; \
+		! -path $(SNAKEMAKE_REPORT) ! -name '.snakemake-report.*' -print -quit 2>/dev/null)$(if $(strip $(CONFIG)),CONFIG)"; \
 	if [ -f $(SNAKEMAKE_REPORT) ] && [ -z "$$newer" ]; then \
 		echo "$(SNAKEMAKE_REPORT) is up to date"; exit 0; \
 	fi; \
 	mkdir -p $(dir $(SNAKEMAKE_REPORT)); \
 	tmp="$(dir $(SNAKEMAKE_REPORT)).snakemake-report.$$$$.html"; \
 	trap 'rm -f "$$tmp"' EXIT; \
-	$(SNAKEMAKE_RUN) --report $(CURDIR)/$$tmp && mv -f "$$tmp" $(SNAKEMAKE_REPORT)
+	$(SNAKEMAKE_RUN) $(CONFIG_ARGS) --report $(CURDIR)/$$tmp && mv -f "$$tmp" $(SNAKEMAKE_REPORT)
 
 system-deps:
 	@missing=""; for t in $(SYSTEM_TOOLS); do [ -x "$$t" ] || missing="$$missing $$t"; done; \

@@ -106,9 +106,11 @@ def load_paper(slug: str, root: Path = ROOT, source: str = "config/config.yaml")
     return paper
 
 
-def load_papers(slugs: Sequence[str], root: Path = ROOT) -> dict[str, Paper]:
-    """Every listed paper, in config order."""
-    return {slug: load_paper(slug, root) for slug in slugs}
+def load_papers(
+    slugs: Sequence[str], root: Path = ROOT, source: str = "config/config.yaml"
+) -> dict[str, Paper]:
+    """Every listed paper, in config order (``source``: the config files, for errors)."""
+    return {slug: load_paper(slug, root, source) for slug in slugs}
 
 
 def context(
@@ -161,6 +163,15 @@ def validate_scenarios(paper: Paper, names: Sequence[str], directory: str | Path
         paper.load_scenario(Path(directory) / f"{name}.yaml")
 
 
+def _shown(path: str | Path, root: Path) -> str:
+    """A config file's name as the user knows it: relative to the repository if inside it."""
+    p = Path(path)
+    try:
+        return p.resolve().relative_to(root.resolve()).as_posix()
+    except ValueError:
+        return str(path)
+
+
 def check_workflow(
     config: Mapping[str, Any], configfiles: Sequence[str | Path], root: Path = ROOT
 ) -> tuple[dict[str, Paper], dict[str, Context]]:
@@ -169,8 +180,9 @@ def check_workflow(
     file names, every scenario file and the published file. Returns the papers and their
     contexts; the first problem raises its ConfigError, before any job."""
     validate_workflow_config(config, configfiles, root)
-    papers = load_papers(config["papers"], root)
-    contexts = {slug: context(paper, config, root) for slug, paper in papers.items()}
+    source = ", ".join(_shown(p, root) for p in configfiles) or "config/config.yaml"
+    papers = load_papers(config["papers"], root, source)
+    contexts = {slug: context(paper, config, root, source) for slug, paper in papers.items()}
     for slug, paper in papers.items():
         validate_scenarios(paper, contexts[slug].scenarios, root / contexts[slug].scenarios_dir)
         validate_published(paper, contexts[slug], root)
