@@ -22,6 +22,7 @@ from pipeline.altimeter_attitude import flightlog
 from pipeline.north_finding import readings as rd
 from pipeline.north_finding.run import _readings
 from pipeline.north_finding.scenario import load_scenario
+from tests.hang_guard import HANG_GUARD_S
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "config" / "scenarios" / "north_finding" / "example_readings.yaml"
@@ -35,7 +36,7 @@ def run_cli(*args: str, cwd: Path = ROOT) -> subprocess.CompletedProcess[str]:
         env={"PYTHONPATH": str(ROOT), "PATH": "/usr/bin:/bin"},
         capture_output=True,
         text=True,
-        timeout=300,
+        timeout=HANG_GUARD_S,
     )
 
 
@@ -125,7 +126,7 @@ def test_dispatcher_help_imports_no_subcommand():
         env={"PYTHONPATH": str(ROOT)},
         capture_output=True,
         text=True,
-        timeout=120,
+        timeout=HANG_GUARD_S,
     )
     assert r.returncode == 0, r.stderr
     loaded = set(r.stderr.split())
