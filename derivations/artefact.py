@@ -12,9 +12,14 @@ What the artefact holds, and what stays independent:
 * ``checks``: the audit's :class:`derivations.checks.Check` list. Each pairs the paper's
   equation as printed (transcribed in ``printed.py``, not derived) with the derived form;
   the audit compares the two, so the artefact is checked against an independent path.
-* ``modules``: per generated module (the paper's and the shared frames module) its path
-  name, header and :class:`derivations.codegen.GeneratedFunction` list; the codegen check
-  renders them and compares the text with the committed module.
+* ``modules``: the paper's generated module: its generator's name, header and
+  :class:`derivations.codegen.GeneratedFunction` list; the codegen check renders them and
+  compares the text with the committed module. The shared frames module has an artefact of
+  its own (:func:`build_frames`, ``results/frames_derivation.pkl``), built once for all papers.
+
+Each unit (a generated module's functions, the audit's checks) is derived from SymPy's random
+generator freshly seeded (:data:`derivations.SYMPY_SEED`), so what it gives does not depend on
+what else the process derived first.
 
 Pickle, protocol fixed: SymPy expressions, matrices and dataclasses round-trip, and with
 hash randomisation off (PYTHONHASHSEED=0 in the workflow's jobs) the bytes are the same in
@@ -28,33 +33,59 @@ import pickle
 from pathlib import Path
 from typing import Any
 
+import sympy.core.random as _sympy_random
+
 # the classes the artefact holds: imported here so that every reader of an artefact declares
 # (through this module's imports) the code its objects are rebuilt with
 from derivations.checks import Check
 from derivations.codegen import GeneratedFunction
 
-__all__ = ["PROTOCOL", "build", "dumps", "load"]
+__all__ = ["FRAMES", "PROTOCOL", "build", "build_frames", "dumps", "load"]
 
 PROTOCOL = 4
+#: the generator of the shared frames module
+FRAMES = "derivations.generate_frames"
 #: the keys of an artefact, in order
 KEYS = ("audit_module", "generator_module", "checks", "modules")
 
 
+def _generated(name: str) -> dict[str, Any]:
+    """One generated module's functions and header, derived from a freshly seeded SymPy
+    generator (what a unit derives does not depend on what the process derived before)."""
+    generator = importlib.import_module(name)
+    _reseed()
+    return {"generator": name, "header": generator.HEADER, "functions": generator.functions()}
+
+
+def _reseed() -> None:
+    from derivations import SYMPY_SEED
+
+    _sympy_random.seed(SYMPY_SEED)
+
+
 def build(audit_module: str, generator_module: str) -> dict[str, Any]:
     """The derivations of one paper: its audit checks and the functions of its generated
-    module and of the shared frames module, with their headers."""
+    module, with its header. The shared frames module is derived once for every paper
+    (:func:`build_frames`, the ``derive_frames`` rule), not in each paper's artefact."""
     audit = importlib.import_module(audit_module)
-    modules = []
-    for name in (generator_module, "derivations.generate_frames"):
-        generator = importlib.import_module(name)
-        modules.append(
-            {"generator": name, "header": generator.HEADER, "functions": generator.functions()}
-        )
+    modules = [_generated(generator_module)]
+    _reseed()
     return {
         "audit_module": audit_module,
         "generator_module": generator_module,
         "checks": audit.checks(),
         "modules": modules,
+    }
+
+
+def build_frames() -> dict[str, Any]:
+    """The artefact of the shared frames module (pipeline/generated/frames.py), which every
+    paper's generated code calls: its functions only, no audit checks."""
+    return {
+        "audit_module": None,
+        "generator_module": FRAMES,
+        "checks": [],
+        "modules": [_generated(FRAMES)],
     }
 
 

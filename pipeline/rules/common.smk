@@ -173,14 +173,12 @@ def paper_targets(slug):
 
 def derive_code(step):
     """Input function: the code a derive step of one paper runs (its import graph). The derive
-    rule runs the paper's audit checks and generators; the audit and the codegen check read
-    its artefact and run only the comparison code their scripts import."""
+    rule runs the paper's audit checks and generator (the shared frames generator has its own
+    rule, derive_frames); the audit and the codegen check read the artefacts and run only the
+    comparison code their scripts import."""
     modules = {
         "derive": lambda paper: code(
-            paper.audit_module,
-            paper.generator_module,
-            "derivations.generate_frames",
-            script="derive.py",
+            paper.audit_module, paper.generator_module, script="derive.py"
         ),
         "audit": lambda paper: code(script="equation_audit.py"),
         "codegen": lambda paper: code(script="codegen_check.py"),

@@ -24,10 +24,31 @@ rule derive:
         "../scripts/derive.py"
 
 
+# the shared frames module (pipeline/generated/frames.py), which every paper's code calls:
+# derived once for all papers
+rule derive_frames:
+    input:
+        code=code("derivations.generate_frames", script="derive_frames.py"),
+    output:
+        kept(f"{RESULTS}/frames_derivation.pkl"),
+    log:
+        f"{RESULTS}/logs/derive_frames.log",
+    benchmark:
+        f"{RESULTS}/benchmarks/derive_frames.tsv"
+    conda:
+        ENV
+    threads: job_threads(f"{RESULTS}/benchmarks/derive_frames.tsv")
+    resources:
+        **job_resources(f"{RESULTS}/benchmarks/derive_frames.tsv"),
+    script:
+        "../scripts/derive_frames.py"
+
+
 rule codegen_check:
     input:
         code=derive_code("codegen"),
         derivation=rules.derive.output[0],
+        frames_derivation=rules.derive_frames.output[0],
         generated="pipeline/generated/{paper}.py",
         frames="pipeline/generated/frames.py",
     output:

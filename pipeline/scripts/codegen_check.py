@@ -1,7 +1,8 @@
 # Snakemake script: fail if a generated module differs from what its derivations generate: the
 # paper's (input.generated) and the shared frames module every paper calls (input.frames), each
-# rendered from the functions in the paper's derivation artefact (input.derivation, written by
-# the derive rule from derivations.<slug>.generate and derivations.generate_frames).
+# rendered from the functions in its derivation artefact: the paper's (input.derivation, the
+# derive rule, derivations.<slug>.generate) and the frames one (input.frames_derivation, the
+# derive_frames rule, derivations.generate_frames).
 from pathlib import Path
 
 from derivations.artefact import load
@@ -10,7 +11,10 @@ from pipeline.atomic import write_text
 from pipeline.script_log import logged
 
 with logged(snakemake.log[0], written=snakemake.output):  # noqa: F821
-    modules = load(snakemake.input.derivation)["modules"]  # noqa: F821
+    modules = [
+        *load(snakemake.input.derivation)["modules"],  # noqa: F821
+        *load(snakemake.input.frames_derivation)["modules"],  # noqa: F821
+    ]
     paths = [snakemake.input.generated, snakemake.input.frames]  # noqa: F821
     lines = []
     for module, path in zip(modules, paths, strict=True):

@@ -87,3 +87,21 @@ def test_a_file_that_is_not_an_artefact_is_refused_in_one_line(tmp_path, content
         artefact.load(path)
     message = str(info.value)
     assert str(path) in message and says in message and "\n" not in message
+
+
+def test_the_frames_artefact_renders_the_committed_frames_module():
+    """build_frames (the derive_frames rule, once for all papers) gives the functions of
+    pipeline/generated/frames.py, and no audit checks."""
+    built = artefact.build_frames()
+    assert built["checks"] == [] and built["generator_module"] == artefact.FRAMES
+    (module,) = built["modules"]
+    assert render_module(module["functions"], module["header"]) == generate_frames.source()
+
+
+def test_a_unit_derives_the_same_whatever_the_process_derived_before():
+    """Each unit starts from a freshly seeded SymPy generator: the frames functions derived
+    after another derivation are those derived first."""
+    first = artefact.dumps(artefact.build_frames())
+    sp.simplify(sp.sin(sp.Symbol("y")) ** 2 + sp.cos(sp.Symbol("y")) ** 2)  # draws, caches
+    sp.core.random.random()
+    assert artefact.dumps(artefact.build_frames()) == first
