@@ -147,10 +147,15 @@ class Step:
     """One step of a paper's workflow (one Snakemake rule ``<slug>_<name>``).
 
     ``inputs`` and ``outputs`` map the rule's input/output names to paths built from the
-    :class:`Context`; a per-scenario step uses ``{scenario}`` in its paths (one job per
-    scenario). ``entry`` is ``"module:function"``; the modules it imports (recursively, inside
-    this repository) are inputs of the rule too, so an edit reruns the step. ``report`` tags
+    :class:`Context` (or an input function of the wildcards, for inputs that depend on a
+    scenario's settings); a per-scenario step uses ``{scenario}`` in its paths (one job per
+    scenario), and the names in ``wildcards`` besides (one job per value; ``chunk``: digits).
+    ``entry`` is ``"module:function"``; the modules it imports (recursively, inside this
+    repository) are inputs of the rule too, so an edit reruns the step. ``report`` tags
     outputs for ``snakemake --report``: output name -> (subcategory, caption file stem).
+    ``resources``: the rule's ``mem_mb`` and ``runtime`` (values or functions of the
+    wildcards) for a step whose cost follows its settings; other steps' come from the measured
+    table (config/job_resources.csv).
     """
 
     name: str
@@ -160,6 +165,8 @@ class Step:
     per_scenario: bool = False
     params: Callable[[Context], Mapping[str, Any]] = field(default=lambda ctx: {})
     report: Mapping[str, tuple[str, str]] = field(default_factory=dict)
+    wildcards: tuple[str, ...] = ()
+    resources: Callable[[Context], Mapping[str, Any]] | None = None
 
     @property
     def module(self) -> str:

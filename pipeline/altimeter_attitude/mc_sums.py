@@ -14,6 +14,10 @@ window_run_rms.csv) and the numerical-trouble counts. Memory is O(T) per filter,
 block's histories, whatever the number of runs. The statistics are those of
 :mod:`pipeline.altimeter_attitude.metrics`, :mod:`windows` and :mod:`trouble` on the whole
 history, the sums only taken in another order (a few ulps; tests compare to 1e-12).
+
+A block's contribution is a :class:`BlockSums` (:func:`block_sums`), folded in by
+:meth:`MonteCarloSums.fold`; the workflow's chunk jobs write them to files and the merge folds
+them in the same order (:mod:`pipeline.altimeter_attitude.chunks`: the same bytes).
 """
 
 from __future__ import annotations
@@ -38,7 +42,7 @@ from pipeline.altimeter_attitude.trajectory import Truth
 from pipeline.altimeter_attitude.trouble import DIVERGED_DEG, TROUBLE_KINDS
 from pipeline.altimeter_attitude.windows import Window
 
-__all__ = ["BLOCK_RUNS", "FilterSums", "MonteCarloSums"]
+__all__ = ["BLOCK_RUNS", "BlockSums", "FilterSums", "MonteCarloSums", "block_sums"]
 
 #: runs per block: the histories of one block (~150 MB per filter at 10,000 steps) are all
 #: that is held; fixed, so the results do not depend on the machine
@@ -96,6 +100,46 @@ def _accumulate(
             run_ms[i, j, 1] /= t1 - firsts[j]
 
 
+@dataclass(frozen=True)
+class BlockSums:
+    """What one block of runs of one filter adds to its :class:`FilterSums`: ``squares``
+    (len(_SQUARES), T + 1), the block's sums over runs per state time; ``run_ms`` (n, F, 2),
+    per run and window start the mean square roll and pitch error; ``counts`` (3,), the runs
+    of each trouble kind; ``any_sigma`` (2,), some roll sigma / some roll or pitch sigma not
+    NaN."""
+
+    filter: str
+    firsts: tuple[int, ...]
+    squares: np.ndarray
+    run_ms: np.ndarray
+    counts: np.ndarray
+    any_sigma: np.ndarray
+
+    @property
+    def n_runs(self) -> int:
+        return int(self.run_ms.shape[0])
+
+
+def block_sums(est: Estimates, truth: Truth, firsts: tuple[int, ...], n_times: int) -> BlockSums:
+    """One block's :class:`BlockSums` (one pass of :func:`_accumulate` over its histories)."""
+    n, t1 = est.roll.shape
+    if t1 != n_times:
+        raise ValueError(f"{est.filter}: {t1} state times, expected {n_times}")
+    block = np.zeros((len(_SQUARES), t1))
+    run_ms = np.zeros((n, len(firsts), 2))
+    flags = np.zeros((n, 3), dtype=bool)
+    any_sigma = np.zeros(2, dtype=bool)
+    f = np.ascontiguousarray
+    _accumulate(
+        f(est.roll), f(est.pitch), f(est.roll_sigma), f(est.pitch_sigma), f(est.c),
+        f(est.norm_error), f(truth.roll), f(truth.pitch), f(truth.c),
+        np.asarray(firsts, dtype=np.int64), np.deg2rad(DIVERGED_DEG),
+        block, run_ms, flags, any_sigma,
+    )  # fmt: skip
+    counts = flags.sum(axis=0).astype(np.int64)
+    return BlockSums(est.filter, tuple(firsts), block, run_ms, counts, any_sigma)
+
+
 @dataclass
 class FilterSums:
     """The running sums of one filter (arrays over the T + 1 state times)."""
@@ -110,31 +154,29 @@ class FilterSums:
     nan_sigma_runs: int = 0  # runs of blocks whose roll and pitch sigmas are all NaN
 
     def add(self, est: Estimates, truth: Truth, firsts: tuple[int, ...]) -> None:
-        n, t1 = est.roll.shape
-        if t1 != self.n_times:
-            raise ValueError(f"{est.filter}: {t1} state times, expected {self.n_times}")
-        block = np.zeros((len(_SQUARES), t1))
-        run_ms = np.zeros((n, len(firsts), 2))
-        flags = np.zeros((n, 3), dtype=bool)
-        any_sigma = np.zeros(2, dtype=bool)
-        f = np.ascontiguousarray
-        _accumulate(
-            f(est.roll), f(est.pitch), f(est.roll_sigma), f(est.pitch_sigma), f(est.c),
-            f(est.norm_error), f(truth.roll), f(truth.pitch), f(truth.c),
-            np.asarray(firsts, dtype=np.int64), np.deg2rad(DIVERGED_DEG),
-            block, run_ms, flags, any_sigma,
-        )  # fmt: skip
+        """Fold one block's estimates in (blocks in run order)."""
+        self.fold(block_sums(est, truth, firsts, self.n_times))
+
+    def fold(self, part: BlockSums) -> None:
+        """Fold one block's sums in: the same additions, in the same order, whether the block
+        was just computed or read back from a chunk file (pipeline/altimeter_attitude/chunks.py)."""
+        if part.filter != self.filter or part.squares.shape != (len(_SQUARES), self.n_times):
+            raise ValueError(
+                f"block sums of {part.filter} over {part.squares.shape[-1]} state times: "
+                f"expected {self.filter} over {self.n_times}"
+            )
+        n = part.n_runs
         for j, key in enumerate(_SQUARES):
-            self.sums[key] = block[j] if key not in self.sums else self.sums[key] + block[j]
-        for j, first in enumerate(firsts):
-            self.run_rms.setdefault(first, []).append(RAD2DEG * np.sqrt(run_ms[:, j]))
-        self.sigma_blocks += bool(any_sigma[0])
+            block = part.squares[j]
+            self.sums[key] = block if key not in self.sums else self.sums[key] + block
+        for j, first in enumerate(part.firsts):
+            self.run_rms.setdefault(first, []).append(RAD2DEG * np.sqrt(part.run_ms[:, j]))
+        self.sigma_blocks += bool(part.any_sigma[0])
         # trouble.estimates_trouble: a filter whose sigmas are all NaN has no covariance
-        counts = flags.sum(axis=0)
-        if not any_sigma[1]:
+        if not part.any_sigma[1]:
             self.nan_sigma_runs += n
         for j, kind in enumerate(TROUBLE_KINDS):
-            self.trouble[kind] = self.trouble.get(kind, 0) + int(counts[j])
+            self.trouble[kind] = self.trouble.get(kind, 0) + int(part.counts[j])
         self.n_runs += n
 
     @property
@@ -231,6 +273,22 @@ class MonteCarloSums:
         if sums is None:
             sums = self.filters[est.filter] = FilterSums(est.filter, len(self.truth.t))
         sums.add(est, self.truth, self.firsts)
+
+    def block_sums(self, est: Estimates) -> BlockSums:
+        """One block's sums of one filter, not folded in (a chunk job writes them)."""
+        return block_sums(est, self.truth, self.firsts, len(self.truth.t))
+
+    def fold(self, part: BlockSums) -> None:
+        """Fold one block's sums in (blocks in run order), as :meth:`add` does."""
+        if part.firsts != self.firsts:
+            raise ValueError(
+                f"block sums of {part.filter} from window starts {part.firsts}: "
+                f"expected {self.firsts}"
+            )
+        sums = self.filters.get(part.filter)
+        if sums is None:
+            sums = self.filters[part.filter] = FilterSums(part.filter, len(self.truth.t))
+        sums.fold(part)
 
     def summary_frame(self) -> pd.DataFrame:
         rows = [s.summary_row(self.first) for s in self.filters.values()]

@@ -90,6 +90,31 @@ def _figure_outputs(ctx: Context) -> dict[str, list[str]]:
     }
 
 
+def _chunks(ctx: Context) -> dict[str, object]:
+    """A scenario's chunk files (monte_carlo.chunk_runs), the inputs of its merge; none for a
+    Monte Carlo run in one job."""
+    from pipeline.altimeter_attitude.chunks import chunk_bounds
+
+    def files(wildcards) -> list[str]:
+        sc = load_scenario(ctx.scenario_file(wildcards.scenario))
+        n = len(chunk_bounds(sc.n_runs, sc.chunk_runs))
+        return [f"{ctx.results}/{wildcards.scenario}/chunks/{c}.mcsums" for c in range(n)]
+
+    return {"chunks": files}
+
+
+def _chunk_resources(ctx: Context) -> dict[str, object]:
+    """A chunk job's memory and run time, from its scenario's size (chunks.chunk_request)."""
+    from pipeline.altimeter_attitude.chunks import chunk_request
+
+    def pick(name: str):
+        return lambda wc: getattr(
+            chunk_request(load_scenario(ctx.scenario_file(wc.scenario))), name
+        )
+
+    return {"mem_mb": pick("mem_mb"), "runtime": pick("runtime")}
+
+
 STEPS = (
     Step(
         "simulate",
@@ -97,6 +122,7 @@ STEPS = (
         per_scenario=True,
         inputs=lambda ctx: {
             **ctx.run_inputs(ctx.scenario_file("{scenario}"), SCENARIO_SCHEMA),
+            **_chunks(ctx),
         },
         outputs=lambda ctx: {
             **{n: f"{ctx.results}/{{scenario}}/{n}.csv" for n in RESULT_CSVS},
@@ -104,6 +130,16 @@ STEPS = (
             "provenance": f"{ctx.results}/{{scenario}}/provenance.json",
         },
         report={"rms_summary": ("Scenario summaries", "scenario_summary")},
+    ),
+    # a scenario with monte_carlo.chunk_runs: one job per chunk of runs (merged by simulate)
+    Step(
+        "simulate_chunk",
+        "pipeline.altimeter_attitude.steps:simulate_chunk",
+        per_scenario=True,
+        wildcards=("chunk",),
+        inputs=lambda ctx: ctx.run_inputs(ctx.scenario_file("{scenario}"), SCENARIO_SCHEMA),
+        outputs=lambda ctx: {"sums": f"{ctx.results}/{{scenario}}/chunks/{{chunk}}.mcsums"},
+        resources=_chunk_resources,
     ),
     Step(
         "sweep",

@@ -68,8 +68,12 @@ __all__ = [
     "run_filters",
     "simulate",
     "simulate_sums",
+    "new_sums",
+    "block_inputs",
+    "add_noise_free",
     "truth_frame",
     "run_scenario",
+    "write_results",
     "main",
 ]
 
@@ -156,6 +160,33 @@ def simulate(
     return inputs, mc, nf
 
 
+def new_sums(
+    sc: Scenario, filters: tuple[str, ...] = ALTIMETER_FILTERS
+) -> tuple[Inputs, MonteCarloSums, MonteCarloSums]:
+    """The noise-free run's inputs and the empty Monte Carlo and noise-free sums of ``sc``."""
+    first = int(round(sc.transient * sc.sensors.rate_hz))
+    wins = windows.scenario_windows(sc)
+    clean = simulate_inputs(sc.profiles, sc.sensors, sc.initial, 1, sc.seed, sc.name, 0.0)
+    mc = MonteCarloSums(clean.truth, first, wins, "monte_carlo", filters)
+    nf = MonteCarloSums(clean.truth, first, wins, "noise_free", filters)
+    return clean, mc, nf
+
+
+def block_inputs(
+    sc: Scenario, start: int, stop: int, block: int = BLOCK_RUNS
+) -> Iterator[tuple[int, Inputs]]:
+    """(first run, inputs) of runs ``start``..``stop - 1`` in blocks of ``block`` runs."""
+    if block < 1:
+        raise ValueError(f"block = {block}: must be >= 1")
+    for first in range(start, stop, block):
+        size = min(block, stop - first)
+        part = simulate_inputs(
+            sc.profiles, sc.sensors, sc.initial, size, sc.seed, sc.name, first_run=first
+        )
+        yield first, part
+        del part
+
+
 def simulate_sums(
     sc: Scenario,
     n_runs: int | None = None,
@@ -170,30 +201,27 @@ def simulate_sums(
     effect). Returns (the first
     block's inputs, for truth.csv; the Monte Carlo sums; the noise-free sums)."""
     n = n_runs or sc.n_runs
-    if block < 1:
-        raise ValueError(f"block = {block}: must be >= 1")
-    first = int(round(sc.transient * sc.sensors.rate_hz))
-    wins = windows.scenario_windows(sc)
-    clean = simulate_inputs(sc.profiles, sc.sensors, sc.initial, 1, sc.seed, sc.name, 0.0)
-    mc = MonteCarloSums(clean.truth, first, wins, "monte_carlo", filters)
-    nf = MonteCarloSums(clean.truth, first, wins, "noise_free", filters)
+    clean, mc, nf = new_sums(sc, filters)
     first_inputs: Inputs | None = None
-    for start in range(0, n, block):
-        size = min(block, n - start)
-        part = simulate_inputs(
-            sc.profiles, sc.sensors, sc.initial, size, sc.seed, sc.name, first_run=start
-        )
+    for start, part in block_inputs(sc, 0, n, block):
         if n > block:
-            log(f"{sc.name}: runs {start}-{start + size - 1} of {n}")
+            log(f"{sc.name}: runs {start}-{start + part.n_runs - 1} of {n}")
         for est in iter_filters(sc, part, filters, log):
             mc.add(est)
         if first_inputs is None:
             first_inputs = part
         del part
-    for est in iter_filters(sc, clean, filters, lambda m: None):
-        nf.add(est)
+    add_noise_free(sc, clean, nf, filters)
     assert first_inputs is not None
     return first_inputs, mc, nf
+
+
+def add_noise_free(
+    sc: Scenario, clean: Inputs, nf: MonteCarloSums, filters: tuple[str, ...] = ALTIMETER_FILTERS
+) -> None:
+    """The noise-free run through every filter, folded into ``nf``."""
+    for est in iter_filters(sc, clean, filters, lambda m: None):
+        nf.add(est)
 
 
 def truth_frame(inputs: Inputs) -> pd.DataFrame:
@@ -244,14 +272,27 @@ def _relative(path: Path) -> str:
 
 
 def run_scenario(
-    scenario: Scenario | str | Path, out_dir: str | Path, n_runs: int | None = None, log=print
+    scenario: Scenario | str | Path,
+    out_dir: str | Path,
+    n_runs: int | None = None,
+    log=print,
+    block: int = BLOCK_RUNS,
 ) -> dict[str, Path]:
-    """Run a scenario (validated first) and write its results atomically into ``out_dir``."""
+    """Run a scenario (validated first) in one process and write its results atomically into
+    ``out_dir`` (the workflow's chunked form, :mod:`pipeline.altimeter_attitude.chunks`,
+    writes the same bytes)."""
+    sc = scenario if isinstance(scenario, Scenario) else load_scenario(scenario)
+    inputs, mc, nf = simulate_sums(sc, n_runs, log=log, block=block)
+    return write_results(sc, out_dir, inputs, mc, nf)
+
+
+def write_results(
+    sc: Scenario, out_dir: str | Path, inputs: Inputs, mc: MonteCarloSums, nf: MonteCarloSums
+) -> dict[str, Path]:
+    """The results files of a scenario from its sums (``inputs``: the first block's)."""
     from pipeline.provenance import provenance
 
-    sc = scenario if isinstance(scenario, Scenario) else load_scenario(scenario)
     out_dir = Path(out_dir)
-    inputs, mc, nf = simulate_sums(sc, n_runs, log=log)
     written = {
         "rms_summary": write_csv(
             out_dir / "rms_summary.csv", mc.summary_frame(), RMS_SUMMARY_COLUMNS

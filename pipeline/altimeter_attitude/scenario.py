@@ -50,6 +50,9 @@ class Scenario:
     after_bank: (
         float  # rad: the window after the first bank starts when the first bank of this roll ends
     )
+    #: runs per workflow job of the Monte Carlo (monte_carlo.chunk_runs; None: one job);
+    #: how the runs are spread, not what they give (pipeline/altimeter_attitude/chunks.py)
+    chunk_runs: int | None = None
 
     @property
     def config_sha256(self) -> str:
@@ -135,6 +138,7 @@ def build_scenario(raw: Any, path: Path) -> Scenario:
         transient=float(raw["metrics"]["transient_s"]),
         output_rate=out_rate,
         after_bank=float(raw["metrics"]["after_bank_deg"]) * DEG,
+        chunk_runs=raw["monte_carlo"].get("chunk_runs"),
     )
     sc.decisions()  # every decision names a real field
     return sc

@@ -9,14 +9,36 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from pathlib import Path
 
-__all__ = ["simulate", "sweep", "verdicts"]
+__all__ = ["simulate", "simulate_chunk", "sweep", "verdicts"]
 
 
 def simulate(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
-    """One scenario: the Monte Carlo of every filter."""
-    from pipeline.altimeter_attitude.run import run_scenario
+    """One scenario: the Monte Carlo of every filter, in this job, or merged from the chunk
+    jobs' files (``chunks``: none unless the scenario sets ``monte_carlo.chunk_runs``)."""
+    from pipeline.altimeter_attitude.chunks import merge_chunks
+    from pipeline.altimeter_attitude.run import run_scenario, write_results
+    from pipeline.altimeter_attitude.scenario import load_scenario
 
-    run_scenario(inputs["scenario"], Path(outputs["rms_summary"]).parent, log=log)
+    out_dir = Path(outputs["rms_summary"]).parent
+    if not inputs["chunks"]:
+        run_scenario(inputs["scenario"], out_dir, log=log)
+        return
+    sc = load_scenario(inputs["scenario"])
+    log(f"{sc.name}: merging {len(inputs['chunks'])} chunks of {sc.chunk_runs} runs")
+    write_results(sc, out_dir, *merge_chunks(sc, inputs["chunks"]))
+
+
+def simulate_chunk(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
+    """One chunk of a scenario's Monte Carlo: its block sums (pipeline/altimeter_attitude/chunks.py)."""
+    from pipeline.altimeter_attitude.chunks import chunk_bounds, simulate_chunk, write_chunk
+    from pipeline.altimeter_attitude.scenario import load_scenario
+
+    sc = load_scenario(inputs["scenario"])
+    index = int(params["wildcards"]["chunk"])
+    bounds = chunk_bounds(sc.n_runs, sc.chunk_runs)
+    if not 0 <= index < len(bounds):
+        raise ValueError(f"{sc.name}: chunk {index}: the scenario has {len(bounds)} chunks")
+    write_chunk(outputs["sums"], sc, bounds[index], simulate_chunk(sc, bounds[index], log=log))
 
 
 def sweep(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:

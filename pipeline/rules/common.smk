@@ -160,8 +160,10 @@ def _is_figure(path, paper):
 
 
 def step_log(paper, step, kind):
-    """results/<slug>/logs/<step>[_<scenario>].log (kind "logs") or benchmarks/....tsv."""
-    suffix = "_{scenario}" if step.per_scenario else ""
+    """results/<slug>/logs/<step>[_<scenario>][_<wildcard>...].log (kind "logs") or
+    benchmarks/....tsv."""
+    names = (("scenario",) if step.per_scenario else ()) + step.wildcards
+    suffix = "".join(f"_{{{name}}}" for name in names)
     ext = "log" if kind == "logs" else "tsv"
     return f"{CONTEXTS[paper.slug].results}/{kind}/{step.name}{suffix}.{ext}"
 

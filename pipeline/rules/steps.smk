@@ -19,11 +19,16 @@ for _paper in PAPERS.values():
                 step_log(_paper, _step, "benchmarks")
             wildcard_constraints:
                 scenario="|".join(_ctx.scenarios),
+                chunk=r"\d+",
             conda:
                 ENV
             threads: job_threads(step_log(_paper, _step, "benchmarks"))
             resources:
-                **job_resources(step_log(_paper, _step, "benchmarks")),
+                **(
+                    _step.resources(_ctx)
+                    if _step.resources
+                    else job_resources(step_log(_paper, _step, "benchmarks"))
+                ),
             params:
                 **_step.params(_ctx),
                 entry=_step.entry,
