@@ -157,13 +157,14 @@ def once_across_workers(dest: Path, build) -> Path:
 
 
 def output_digests(repo: Path) -> dict[str, str]:
-    """sha256 of every file under results/ and reports/ (benchmark files and job logs, which hold
-    wall-clock timings by design, excepted), by path relative to ``repo``."""
+    """sha256 of every file under results/ and reports/ (benchmark files, which hold wall-clock
+    timings by design, excepted; the job logs included: they print no timings), by path
+    relative to ``repo``."""
     out = {}
     for top in ("results", "reports"):
         for f in sorted(p for p in (repo / top).rglob("*") if p.is_file()):
             rel = f.relative_to(repo).as_posix()
-            if "/benchmarks/" in rel or "/logs/" in rel:  # wall-clock timings and job logs
+            if "/benchmarks/" in rel:  # wall-clock timings
                 continue
             out[rel] = hashlib.sha256(f.read_bytes()).hexdigest()
     return out

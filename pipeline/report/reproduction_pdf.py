@@ -17,7 +17,6 @@ rebuilding from the same results gives the same bytes.
 from __future__ import annotations
 
 import os
-import time
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -178,8 +177,7 @@ def write_pdf(
     contain every figure."""
     from pipeline.report.document import ROOT  # the repository root
 
-    t0 = time.perf_counter()
     build = compile_pdf(doc, ROOT if root is None else root)
     out = write_bytes(path, build.data)
-    print(f"reproduction_pdf: {path}: {len(build.data)} bytes in {time.perf_counter() - t0:.1f} s")
+    print(f"reproduction_pdf: {path}: {len(build.data)} bytes")
     return out

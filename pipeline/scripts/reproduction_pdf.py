@@ -1,6 +1,5 @@
 # Snakemake script: the combined reproduction report as a PDF, reports/reproduction.pdf
 # (Typst via the typst package; the same document as reports/reproduction.html).
-import time
 from pathlib import Path
 
 from pipeline.report.document import build_document
@@ -8,7 +7,6 @@ from pipeline.report.reproduction_pdf import write_pdf
 from pipeline.script_log import logged
 
 with logged(snakemake.log[0], written=snakemake.output):  # noqa: F821
-    t0 = time.perf_counter()
     root = Path.cwd()
     doc = build_document(
         root=root,
@@ -17,4 +15,4 @@ with logged(snakemake.log[0], written=snakemake.output):  # noqa: F821
         config=Path(snakemake.input.config_file).parent,  # noqa: F821
     )
     out = write_pdf(doc, snakemake.output[0], root=root)  # noqa: F821
-    print(f"wrote {out} ({out.stat().st_size} bytes) in {time.perf_counter() - t0:.1f} s")
+    print(f"wrote {out} ({out.stat().st_size} bytes)")
