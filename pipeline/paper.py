@@ -160,6 +160,9 @@ class Step:
     per_scenario: bool = False
     params: Callable[[Context], Mapping[str, Any]] = field(default=lambda ctx: {})
     report: Mapping[str, tuple[str, str]] = field(default_factory=dict)
+    #: a per-scenario step: the scenarios it runs (default all; steps writing different files,
+    #: e.g. a CSV or a binary form, split them; no scenario: no rule)
+    scenarios: Callable[[Context], Sequence[str]] | None = None
 
     @property
     def module(self) -> str:

@@ -37,8 +37,6 @@ from pipeline.north_finding.columns import (
     A2_SCAN_COLUMNS,
     ERROR_BUDGET_COLUMNS,
     ESTIMATE_COLUMNS,
-    MC_JUDGED_COLUMNS,
-    MC_TRIAL_COLUMNS,
     METHOD_QUANTITIES,
     METHODS,
     N_ROW_COLUMNS,
@@ -46,6 +44,7 @@ from pipeline.north_finding.columns import (
     RANKING_PAIR_COLUMNS,
     SENSORS,
 )
+from pipeline.north_finding.trials_file import COLUMNS, read_trials
 from pipeline.verdicts.kinds import RANK_BAND, Found
 from pipeline.verdicts.published import Problem
 
@@ -79,7 +78,6 @@ KIND_SENSOR = {"exact": "ideal", "statistical": "real", "approximate": "real"}
 
 RESULT_FILES = {
     "estimates": ("estimates.csv", ESTIMATE_COLUMNS),
-    "mc_trials": ("mc_trials.csv", MC_TRIAL_COLUMNS),
     "error_budget": ("error_budget.csv", ERROR_BUDGET_COLUMNS),
 }
 #: Results files the claims and causes read where present (a scenario without a ranking block
@@ -89,8 +87,10 @@ OPTIONAL_FILES = {
     "ranking_pairs": ("ranking_pairs.csv", RANKING_PAIR_COLUMNS),
     "a2_scan": ("a2_scan.csv", A2_SCAN_COLUMNS),
     "n_rows": ("n_rows.csv", N_ROW_COLUMNS),
-    "mc_trials_judged": ("mc_trials_judged.csv", MC_JUDGED_COLUMNS),
 }
+#: per-trial results, CSV or binary (:func:`pipeline.north_finding.trials_file.read_trials`):
+#: key -> required
+TRIAL_FILES = {"mc_trials": True, "mc_trials_judged": False}
 
 
 def check_item(item: Mapping[str, Any]) -> list[Problem]:
@@ -176,6 +176,12 @@ def read_results(
         path = Path(scenario_dir) / filename
         frame = pd.read_csv(path) if path.is_file() else pd.DataFrame(columns=columns)
         out[key] = _check_frame(frame, columns, str(path))
+    for key, required in TRIAL_FILES.items():
+        frame = read_trials(scenario_dir, key)
+        if frame is None and required:
+            path = Path(scenario_dir) / f"{key}.csv"
+            raise ValueError(f"{path}: results file not found (expected columns {COLUMNS[key]})")
+        out[key] = frame if frame is not None else pd.DataFrame(columns=COLUMNS[key])
     prov = Path(scenario_dir) / "provenance.json"
     out["provenance"] = json.loads(prov.read_text(encoding="utf-8")) if prov.is_file() else {}
     out["scenario"] = scenario
