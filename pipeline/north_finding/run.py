@@ -383,6 +383,7 @@ def _level(
 
 OUTPUTS = {
     "estimates": ("estimates.csv", col.ESTIMATE_COLUMNS),
+    "mc_trials": ("mc_trials.csv", col.MC_TRIAL_COLUMNS),  # or .npy: trials_file
     "mc_summary": ("mc_summary.csv", col.MC_SUMMARY_COLUMNS),
     "error_budget": ("error_budget.csv", col.ERROR_BUDGET_COLUMNS),
     "sensitivity": ("sensitivity.csv", col.SENSITIVITY_COLUMNS),
@@ -411,7 +412,8 @@ def run_scenario(
     out_dir = Path(out_dir)
     written = {}
     for key, (name, columns) in OUTPUTS.items():
-        written[key] = write_csv(out_dir / name, frames[key], columns)
+        if key != "mc_trials":  # below, in its form
+            written[key] = write_csv(out_dir / name, frames[key], columns)
     fmt = tf.trials_format(sc.n_trials, sc.trials_file) if sc.kind == "simulated" else "csv"
     written["mc_trials"] = tf.write_trials(
         out_dir, "mc_trials", frames["mc_trials"], frames["truth"], fmt
