@@ -11,6 +11,7 @@ from collections.abc import Callable
 from typing import Any
 
 from pipeline.north_finding.scenario import (
+    ROOT,
     load_scenario,
     scenario_data_files,
     scenario_trials_format,
@@ -110,7 +111,7 @@ def _published(ctx: Context, name: str) -> str:
 
 
 def _format(ctx: Context, scenario: str) -> str:
-    return scenario_trials_format(ctx.scenario_file(scenario))
+    return scenario_trials_format(ROOT / ctx.scenario_file(scenario))
 
 
 def _named(ctx: Context, name: str, scenario: str | None = None) -> str:

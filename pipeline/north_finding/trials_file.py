@@ -238,7 +238,7 @@ def load_npy(path: str | Path, stem: str) -> Trials:
     path = Path(path)
     try:
         with path.open("rb") as fh:
-            arrays = [np.load(fh, allow_pickle=False) for _ in range(4)]
+            arrays = [np.lib.format.read_array(fh, allow_pickle=False) for _ in range(4)]
             trailing = fh.read(1)
     except (ValueError, EOFError, OSError) as exc:
         raise _bad(path, f"{type(exc).__name__}: {exc}") from None
