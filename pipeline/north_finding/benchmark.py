@@ -133,6 +133,13 @@ def measure(scenario: Path, sizes: Sequence[int], steps: Sequence[str]) -> dict:
                     flush=True,
                 )
             print(f"   {n:7d} files: {_trial_files(work / copy.stem)}", flush=True)
+    for a, b in zip(sizes, sizes[1:], strict=False):
+        ratios = ", ".join(
+            f"{s} {table[b, s]['cpu_s'] / max(table[a, s]['cpu_s'], 1e-9):.1f}x"
+            for s in steps
+            if (a, s) in table and (b, s) in table
+        )
+        print(f"   CPU {b} / {a} trials ({b / a:g}x = linear): {ratios}")
     return table
 
 

@@ -26,7 +26,7 @@ A failing row carries its root cause (:func:`pipeline.north_finding.causes.for_i
 from __future__ import annotations
 
 import json
-from collections.abc import Mapping
+from collections.abc import Mapping, MutableMapping
 from pathlib import Path
 from typing import Any
 
@@ -44,7 +44,7 @@ from pipeline.north_finding.columns import (
     RANKING_PAIR_COLUMNS,
     SENSORS,
 )
-from pipeline.north_finding.trials_file import COLUMNS, read_trials
+from pipeline.north_finding.trials_file import COLUMNS, by_key, read_trials
 from pipeline.verdicts.kinds import RANK_BAND, Found
 from pipeline.verdicts.published import Problem
 
@@ -190,6 +190,18 @@ def read_results(
     return out
 
 
+def mc_values(results: Mapping[str, Any], method: str, quantity: str, column: str) -> np.ndarray:
+    """``column`` of mc_trials' rows of one method and quantity, in row order (empty if none);
+    the grouping is computed once per results mapping and column."""
+    cache = f"_mc_trials_{column}"
+    groups = results.get(cache) if isinstance(results, Mapping) else None
+    if groups is None:
+        groups = by_key(results["mc_trials"], ["method", "quantity"], column, by_trial=False)
+        if isinstance(results, MutableMapping):
+            results[cache] = groups
+    return groups.get((method, quantity), np.empty(0))
+
+
 def rows(frame: pd.DataFrame, method: str, quantity: str) -> pd.DataFrame:
     """The rows of one method and quantity."""
     return frame[(frame["method"] == method) & (frame["quantity"] == quantity)]
@@ -230,7 +242,7 @@ def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
     from pipeline.north_finding.judged_n import judged_at, mixed_n
 
     method, quantity = item["select"]["method"], item["quantity"]
-    estimates, trials = results["estimates"], results["mc_trials"]
+    estimates = results["estimates"]
     if item["kind"] == "exact":
         row = _estimate(estimates, "ideal", method, quantity)
         if row is None:
@@ -252,8 +264,8 @@ def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
     cause = for_item(item, results)
     if item["kind"] == "approximate":
         return [_approximate(item, results, cause)]
-    mc = rows(trials, method, quantity)
-    if mc.empty:
+    sample = mc_values(results, method, quantity, "estimate")
+    if sample.size == 0:
         return [
             Found(
                 method=method,
@@ -262,7 +274,6 @@ def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
             )
         ]
     real = _estimate(estimates, "real", method, quantity)
-    sample = mc["estimate"].to_numpy(dtype=float)
     finite = np.isfinite(sample)
     left_out = (
         (
@@ -272,7 +283,7 @@ def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
         else ()
     )
     sample = sample[finite]  # a rank over NaN trials would count them as neither below nor above
-    truth = float(mc["truth"].iloc[0])
+    truth = float(mc_values(results, method, quantity, "truth")[0])
     at = judged_at(results, item)
     weights = None
     if at is not None:

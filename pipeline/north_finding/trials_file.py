@@ -46,6 +46,7 @@ __all__ = [
     "CSV_MAX_TRIALS",
     "FORMATS",
     "Trials",
+    "by_key",
     "difference",
     "error_pct",
     "existing",
@@ -162,21 +163,32 @@ class Trials:
             if est.size
             else np.empty(0)
         )
-        method = np.array([m for m, _ in self.columns], dtype=object)
-        quantity = np.array([q for _, q in self.columns], dtype=object)
         data: dict[str, Any] = {}
         if self.n_avg is not None:
             data["n_avg"] = np.repeat(self.n_avg, n_p * n_t)
         data |= {
             "trial": np.tile(np.arange(n_t, dtype=np.int64), n_b * n_p),
-            "method": np.tile(np.repeat(method, n_t), n_b),
-            "quantity": np.tile(np.repeat(quantity, n_t), n_b),
+            "method": _categorical([m for m, _ in self.columns], n_t, n_b),
+            "quantity": _categorical([q for _, q in self.columns], n_t, n_b),
             "truth": np.tile(np.repeat(self.truth, n_t), n_b),
             "estimate": est,
             "error_pct": pct,
         }
         columns = MC_TRIAL_COLUMNS if self.n_avg is None else MC_JUDGED_COLUMNS
         return pd.DataFrame(data)[columns]
+
+
+#: the string columns of a trials frame, categorical in both forms (a grouping or a filter on
+#: millions of rows then compares small integer codes, not strings)
+CATEGORICAL = ("method", "quantity")
+
+
+def _categorical(names: list[str], n_t: int, n_b: int) -> pd.Categorical:
+    """Column p's name on its n_t rows, for each of n_b blocks (categories sorted, as
+    ``astype("category")`` gives for the CSV form)."""
+    cats = sorted(set(names))
+    codes = np.array([cats.index(n) for n in names], dtype=np.int8)
+    return pd.Categorical.from_codes(np.tile(np.repeat(codes, n_t), n_b), categories=cats)
 
 
 def _save(path: Path, trials: Trials) -> None:
@@ -267,8 +279,9 @@ def load_npy(path: str | Path, stem: str) -> Trials:
 
 
 def read_trials(directory: str | Path, stem: str) -> pd.DataFrame | None:
-    """The frame of ``<stem>.csv`` or ``<stem>.npy`` in ``directory`` (None if neither); the
-    CSV's columns are checked, a folder holding both forms is refused."""
+    """The frame of ``<stem>.csv`` or ``<stem>.npy`` in ``directory`` (None if neither), its
+    :data:`CATEGORICAL` columns categorical; the CSV's columns are checked, a folder holding
+    both forms is refused."""
     if stem not in COLUMNS:
         raise ValueError(f"trials file {stem!r}: allowed: {list(COLUMNS)}")
     found = existing(directory, stem)
@@ -286,4 +299,48 @@ def read_trials(directory: str | Path, stem: str) -> pd.DataFrame | None:
     missing = [c for c in COLUMNS[stem] if c not in frame.columns]
     if missing:
         raise ValueError(f"{path}: missing columns {missing} (has {list(frame.columns)})")
-    return frame
+    return frame.astype(dict.fromkeys(CATEGORICAL, "category"))
+
+
+def by_key(
+    frame: pd.DataFrame, keys: list[str], value: str, *, sort: bool = False, by_trial: bool = True
+) -> dict[tuple, np.ndarray]:
+    """``frame.groupby(keys, sort=sort)`` -> each group's ``value`` in trial order (in row order
+    if not ``by_trial``), without
+    pandas' per-group frames (the trial tables are blocks of consecutive rows in trial order,
+    found in one pass; any other frame is sorted stably by key and trial first).
+
+    >>> f = pd.DataFrame({"method": ["B", "A", "B"], "trial": [1, 0, 0], "e": [1.0, 2.0, 3.0]})
+    >>> {k: v.tolist() for k, v in by_key(f, ["method"], "e").items()}
+    {('B',): [3.0, 1.0], ('A',): [2.0]}
+    """
+    if frame.empty:
+        return {}
+    codes, uniques = zip(*(pd.factorize(frame[k], sort=sort) for k in keys), strict=True)
+    code = np.ravel_multi_index(
+        [np.where(c < 0, 0, c) for c in codes], [max(len(u), 1) for u in uniques]
+    )
+    keep = np.all([c >= 0 for c in codes], axis=0)  # groupby drops missing keys
+    trial = frame["trial"].to_numpy() if by_trial else np.arange(len(frame))
+    values = frame[value].to_numpy(dtype=float)
+    code, trial, values = code[keep], trial[keep], values[keep]
+    starts = np.flatnonzero(np.r_[True, code[1:] != code[:-1]])
+    ends = np.r_[starts[1:], code.size]
+    _, first = np.unique(code, return_index=True)
+    appearance = [int(c) for c in code[np.sort(first)]]  # groupby(sort=False)'s order
+    inner = np.ones(code.size, dtype=bool)
+    inner[starts] = False
+    contiguous = np.unique(code[starts]).size == starts.size
+    if not (contiguous and np.all(np.diff(trial)[inner[1:]] > 0)):
+        order = np.lexsort((trial, code))
+        code, values = code[order], values[order]
+        starts = np.flatnonzero(np.r_[True, code[1:] != code[:-1]])
+        ends = np.r_[starts[1:], code.size]
+    groups = {int(code[s]): values[s:e] for s, e in zip(starts, ends, strict=True)}
+    ordered = sorted(groups) if sort else appearance
+    shape = [max(len(u), 1) for u in uniques]
+    out = {}
+    for c in ordered:
+        index = np.unravel_index(c, shape)
+        out[tuple(u[i] for u, i in zip(uniques, index, strict=True))] = groups[c]
+    return out
