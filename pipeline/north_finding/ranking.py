@@ -300,9 +300,9 @@ def _posterior_set(results: Mapping[str, pd.DataFrame]) -> RankSet | None:
             "put posterior weight; the N inference is stale (rerun the infer_n step)"
         )
     errors: dict[tuple[str, str], dict[int, np.ndarray]] = {}
-    picked = mc[mc["n_avg"].isin(list(weights))]
-    for (n, m, q), v in by_key(picked, ["n_avg", "method", "quantity"], "error_pct", sort=True).items():  # fmt: skip
-        errors.setdefault((str(m), str(q)), {})[int(n)] = v
+    for (n, m, q), v in by_key(mc, ["n_avg", "method", "quantity"], "error_pct", sort=True).items():  # fmt: skip
+        if int(n) in weights:  # the N with posterior weight
+            errors.setdefault((str(m), str(q)), {})[int(n)] = v
     rms, pairs, sizes = {}, {}, set()
     for key, by_n in errors.items():
         rms[key] = float(np.sqrt(sum(w * np.mean(by_n[n] ** 2) for n, w in weights.items())))

@@ -302,6 +302,16 @@ def read_trials(directory: str | Path, stem: str) -> pd.DataFrame | None:
     return frame.astype(dict.fromkeys(CATEGORICAL, "category"))
 
 
+def _factorize(column: pd.Series, sort: bool) -> tuple[np.ndarray, Any]:
+    """Codes and values of a key column; a categorical one's own codes (its categories are
+    sorted: :data:`CATEGORICAL`), so millions of rows are not hashed again."""
+    if isinstance(column.dtype, pd.CategoricalDtype) and column.cat.ordered is False:
+        cats = column.cat.categories
+        if not sort or cats.is_monotonic_increasing:
+            return column.cat.codes.to_numpy().astype(np.int64), cats
+    return pd.factorize(column, sort=sort)
+
+
 def by_key(
     frame: pd.DataFrame, keys: list[str], value: str, *, sort: bool = False, by_trial: bool = True
 ) -> dict[tuple, np.ndarray]:
@@ -316,29 +326,26 @@ def by_key(
     """
     if frame.empty:
         return {}
-    codes, uniques = zip(*(pd.factorize(frame[k], sort=sort) for k in keys), strict=True)
-    code = np.ravel_multi_index(
-        [np.where(c < 0, 0, c) for c in codes], [max(len(u), 1) for u in uniques]
-    )
-    keep = np.all([c >= 0 for c in codes], axis=0)  # groupby drops missing keys
+    codes, uniques = zip(*(_factorize(frame[k], sort) for k in keys), strict=True)
+    shape = [max(len(u), 1) for u in uniques]
+    code = np.ravel_multi_index([np.maximum(c, 0) for c in codes], shape)
     trial = frame["trial"].to_numpy() if by_trial else np.arange(len(frame))
     values = frame[value].to_numpy(dtype=float)
-    code, trial, values = code[keep], trial[keep], values[keep]
+    if any(c.min() < 0 for c in codes):  # groupby drops missing keys
+        keep = np.logical_and.reduce([c >= 0 for c in codes])
+        code, trial, values = code[keep], trial[keep], values[keep]
     starts = np.flatnonzero(np.r_[True, code[1:] != code[:-1]])
     ends = np.r_[starts[1:], code.size]
-    _, first = np.unique(code, return_index=True)
-    appearance = [int(c) for c in code[np.sort(first)]]  # groupby(sort=False)'s order
+    appearance = [int(c) for c in pd.unique(code[starts])]  # groupby(sort=False)'s order
     inner = np.ones(code.size, dtype=bool)
     inner[starts] = False
-    contiguous = np.unique(code[starts]).size == starts.size
-    if not (contiguous and np.all(np.diff(trial)[inner[1:]] > 0)):
+    if not (len(appearance) == starts.size and np.all(np.diff(trial)[inner[1:]] > 0)):
         order = np.lexsort((trial, code))
         code, values = code[order], values[order]
         starts = np.flatnonzero(np.r_[True, code[1:] != code[:-1]])
         ends = np.r_[starts[1:], code.size]
     groups = {int(code[s]): values[s:e] for s, e in zip(starts, ends, strict=True)}
     ordered = sorted(groups) if sort else appearance
-    shape = [max(len(u), 1) for u in uniques]
     out = {}
     for c in ordered:
         index = np.unravel_index(c, shape)
