@@ -174,6 +174,7 @@ test: $(PROJECT_STAMP) system-deps
 bench: $(PROJECT_STAMP)
 	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.altimeter_attitude.benchmark
 	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.bench_workflow
+	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.north_finding.benchmark
 
 lint: $(PROJECT_STAMP)
 	$(VENV)/bin/ruff check .

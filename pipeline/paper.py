@@ -167,6 +167,9 @@ class Step:
     report: Mapping[str, tuple[str, str]] = field(default_factory=dict)
     wildcards: tuple[str, ...] = ()
     resources: Callable[[Context], Mapping[str, Any]] | None = None
+    #: a per-scenario step: the scenarios it runs (default all; steps writing different files,
+    #: e.g. a CSV or a binary form, split them; no scenario: no rule)
+    scenarios: Callable[[Context], Sequence[str]] | None = None
 
     @property
     def module(self) -> str:

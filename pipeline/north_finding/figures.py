@@ -7,7 +7,7 @@ The figures are drawn by :mod:`pipeline.north_finding.figures_errors` (Figs 1-5,
 values read by :mod:`pipeline.north_finding.published_items`.
 
 Inputs (one scenario directory, the results contract of DESIGN.md):
-``mc_trials.csv``, ``estimates.csv``, ``sensitivity.csv`` (optional),
+``mc_trials.csv`` (or ``mc_trials.npy``, :mod:`pipeline.north_finding.trials_file`), ``estimates.csv``, ``sensitivity.csv`` (optional),
 ``provenance.json`` (optional key ``n_avg``), and the published values
 ``config/published/north_finding.yaml``.
 
@@ -34,7 +34,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 
 from pipeline import figure_files
-from pipeline.north_finding.columns import ESTIMATE_COLUMNS, MC_TRIAL_COLUMNS, SENSITIVITY_COLUMNS
+from pipeline.north_finding.columns import ESTIMATE_COLUMNS, SENSITIVITY_COLUMNS
 from pipeline.north_finding.figures_errors import plot_error_figure
 from pipeline.north_finding.figures_sensitivity import plot_sensitivity_figure
 from pipeline.north_finding.figures_spec import FIGURES, SENSITIVITY_STEM
@@ -45,6 +45,7 @@ from pipeline.north_finding.percent_errors import (
     real_abs_error_pct,
 )
 from pipeline.north_finding.published_items import load_published
+from pipeline.north_finding.trials_file import read_trials
 
 __all__ = ["read_provenance", "run", "figures_step", "main"]
 
@@ -85,7 +86,9 @@ def run(
     scenario_dir, out_dir = Path(scenario_dir), Path(out_dir)
     items, _ = load_published(published)
     pub = published_error_pct(items, "real")
-    trials = _read_csv(scenario_dir / "mc_trials.csv", MC_TRIAL_COLUMNS)
+    trials = read_trials(scenario_dir, "mc_trials")
+    if trials is None:
+        raise FileNotFoundError(f"{scenario_dir / 'mc_trials.csv'}: required input is missing")
     estimates = _read_csv(scenario_dir / "estimates.csv", ESTIMATE_COLUMNS)
     sensitivity = _read_csv(scenario_dir / "sensitivity.csv", SENSITIVITY_COLUMNS, optional=True)
     n_avg = read_provenance(scenario_dir).get("n_avg")

@@ -29,6 +29,7 @@ from pipeline.north_finding.n_inference import (
     mixture_rank,
     posterior_range,
 )
+from pipeline.north_finding.trials_file import by_key
 from pipeline.verdicts.cause import Cause
 from pipeline.verdicts.kinds import RANK_BAND
 
@@ -145,8 +146,8 @@ def _trials_by_key(
     if isinstance(results, MutableMapping) and "_trials_by_key" in results:
         return results["_trials_by_key"]
     out = {
-        (int(n), str(m), str(q)): g.sort_values("trial")["estimate"].to_numpy(dtype=float)
-        for (n, m, q), g in mc.groupby(["n_avg", "method", "quantity"], sort=False)
+        (int(n), str(m), str(q)): v
+        for (n, m, q), v in by_key(mc, ["n_avg", "method", "quantity"], "estimate").items()
     }
     if isinstance(results, MutableMapping):
         results["_trials_by_key"] = out

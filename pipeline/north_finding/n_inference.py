@@ -265,14 +265,14 @@ def row_weights(estimates: Sequence[np.ndarray], used: np.ndarray) -> np.ndarray
 
 def infer_frames(
     run: Callable[[int], Mapping[tuple[str, str], np.ndarray]],
-    trials: Callable[[Mapping[tuple[str, str], np.ndarray]], pd.DataFrame],
+    trials: Callable[[Mapping[tuple[str, str], np.ndarray]], pd.DataFrame] | None,
     items: Sequence[Mapping[str, Any]],
     n_avg: Sequence[int],
     eps: float,
 ) -> dict[str, pd.DataFrame]:
     """``n_profile``, ``n_rows`` and ``mc_trials_judged`` for the statistical ``items``:
     ``run(N)`` gives the Monte Carlo estimates at N, ``trials(estimates)`` their mc_trials
-    frame."""
+    frame (``trials`` None: no ``mc_trials_judged``, which the caller writes itself)."""
     grid = [int(n) for n in n_avg]
     estimates = {n: run(n) for n in grid}
     lo_band, hi_band = RANK_BAND
@@ -336,10 +336,16 @@ def infer_frames(
             "inferred": [k == best for k in range(len(grid))],
         }
     )
-    parts = [trials(estimates[n]).assign(n_avg=n) for n in grid]
-    mc = pd.concat(parts, ignore_index=True) if parts else pd.DataFrame(columns=MC_JUDGED_COLUMNS)
-    return {
+    out = {
         "n_profile": prof[N_PROFILE_COLUMNS],
         "n_rows": pd.DataFrame(rows, columns=N_ROW_COLUMNS),
-        "mc_trials_judged": mc[MC_JUDGED_COLUMNS],
     }
+    if trials is not None:
+        parts = [trials(estimates[n]).assign(n_avg=n) for n in grid]
+        mc = (
+            pd.concat(parts, ignore_index=True)
+            if parts
+            else pd.DataFrame(columns=MC_JUDGED_COLUMNS)
+        )
+        out["mc_trials_judged"] = mc[MC_JUDGED_COLUMNS]
+    return out

@@ -10,10 +10,15 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from pipeline.north_finding.scenario import load_scenario, scenario_data_files
+from pipeline.north_finding.scenario import (
+    ROOT,
+    load_scenario,
+    scenario_data_files,
+    scenario_trials_format,
+)
 from pipeline.paper import Context, FigureSpec, Paper, Step, page_step
 
-__all__ = ["PAPER", "TITLE", "CITATION", "FIGURE_CAPTIONS"]
+__all__ = ["PAPER", "TITLE", "CITATION", "FIGURE_CAPTIONS", "trials_files"]
 
 TITLE = "The derivation of modern inertial navigation methods at stationary state"
 CITATION = (
@@ -59,7 +64,9 @@ FIGURE_CAPTIONS: dict[str, str] = {
 }
 
 # --------------------------------------------------------------------------- workflow steps
-#: what the simulate step writes per scenario (results/north_finding/<scenario>/)
+#: what the simulate step writes per scenario (results/north_finding/<scenario>/); mc_trials
+#: and mc_trials_judged are .npy instead of .csv above trials_file.CSV_MAX_TRIALS trials (or as
+#: the scenario's monte_carlo.trials_file says): :func:`trials_files`
 SCENARIO_SCHEMA = "config/schemas/north_finding_scenario.schema.json"
 SCENARIO_FILES = (
     "estimates.csv",
@@ -73,6 +80,8 @@ SCENARIO_FILES = (
     "numerical_trouble.csv",
     "provenance.json",
 )
+#: the per-trial files (CSV or binary: pipeline/north_finding/trials_file.py)
+TRIAL_STEMS = ("mc_trials", "mc_trials_judged")
 #: what the N inference writes into the published scenario's folder
 #: (:mod:`pipeline.north_finding.run_inference`)
 INFERENCE_FILES = (
@@ -98,7 +107,40 @@ VERDICT_INPUTS = (
 
 def _published(ctx: Context, name: str) -> str:
     """A result file of the scenario the published tables are compared with."""
-    return f"{ctx.results}/{ctx.settings['published_scenario']}/{name}"
+    return f"{ctx.results}/{ctx.settings['published_scenario']}/{_named(ctx, name)}"
+
+
+def _format(ctx: Context, scenario: str) -> str:
+    return scenario_trials_format(ROOT / ctx.scenario_file(scenario))
+
+
+def _named(ctx: Context, name: str, scenario: str | None = None) -> str:
+    """``name`` with the per-trial files in the scenario's form (``mc_trials.csv`` ->
+    ``mc_trials.npy`` for a binary one; default: the published scenario)."""
+    fmt = _format(ctx, scenario or ctx.settings["published_scenario"])
+    stem, ext = name.rsplit(".", 1)
+    return f"{stem}.{fmt}" if stem in TRIAL_STEMS and ext == "csv" else name
+
+
+def trials_files(ctx: Context, scenario: str, names: tuple[str, ...] = SCENARIO_FILES) -> list[str]:
+    """The files of ``names`` one scenario's folder holds (per-trial files in its form)."""
+    return [f"{ctx.results}/{scenario}/{_named(ctx, n, scenario)}" for n in names]
+
+
+def _simulate(fmt: str) -> Step:
+    """The simulate step of the scenarios whose per-trial results are ``fmt``."""
+    files = [f"mc_trials.{fmt}" if f == "mc_trials.csv" else f for f in SCENARIO_FILES]
+    return Step(
+        "simulate" if fmt == "csv" else f"simulate_{fmt}",
+        "pipeline.north_finding.steps:simulate",
+        per_scenario=True,
+        inputs=lambda ctx: {
+            **ctx.run_inputs(ctx.scenario_file("{scenario}"), SCENARIO_SCHEMA),
+            "data": _data_files(ctx),
+        },
+        outputs=lambda ctx: {f.split(".")[0]: f"{ctx.results}/{{scenario}}/{f}" for f in files},
+        scenarios=lambda ctx: tuple(s for s in ctx.scenarios if _format(ctx, s) == fmt),
+    )
 
 
 def _figures(ctx: Context) -> dict[str, list[str]]:
@@ -118,18 +160,8 @@ PAPER_FIGURES = tuple(
     for number, (stem, caption) in enumerate(FIGURE_CAPTIONS.items(), 1)
 )
 STEPS = (
-    Step(
-        "simulate",
-        "pipeline.north_finding.steps:simulate",
-        per_scenario=True,
-        inputs=lambda ctx: {
-            **ctx.run_inputs(ctx.scenario_file("{scenario}"), SCENARIO_SCHEMA),
-            "data": _data_files(ctx),
-        },
-        outputs=lambda ctx: {
-            f.split(".")[0]: f"{ctx.results}/{{scenario}}/{f}" for f in SCENARIO_FILES
-        },
-    ),
+    _simulate("csv"),
+    _simulate("npy"),
     Step(
         "infer_n",
         "pipeline.north_finding.steps:infer_n",
@@ -169,7 +201,7 @@ STEPS = (
     ),
     page_step(
         lambda ctx: {
-            "scenarios": [f for name in SCENARIO_FILES for f in ctx.per_scenario(name)],
+            "scenarios": [f for s in ctx.scenarios for f in trials_files(ctx, s)],
             "n_inference": [_published(ctx, f) for f in (*INFERENCE_FILES[:3], "n_trouble.csv")],
             "n_sensitivity": f"{ctx.results}/n_sensitivity.csv",
             "scenario_files": [ctx.scenario_file(s) for s in ctx.scenarios],

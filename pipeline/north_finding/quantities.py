@@ -26,7 +26,7 @@ A failing row carries its root cause (:func:`pipeline.north_finding.causes.for_i
 from __future__ import annotations
 
 import json
-from collections.abc import Mapping
+from collections.abc import Mapping, MutableMapping
 from pathlib import Path
 from typing import Any
 
@@ -37,8 +37,6 @@ from pipeline.north_finding.columns import (
     A2_SCAN_COLUMNS,
     ERROR_BUDGET_COLUMNS,
     ESTIMATE_COLUMNS,
-    MC_JUDGED_COLUMNS,
-    MC_TRIAL_COLUMNS,
     METHOD_QUANTITIES,
     METHODS,
     N_ROW_COLUMNS,
@@ -46,6 +44,7 @@ from pipeline.north_finding.columns import (
     RANKING_PAIR_COLUMNS,
     SENSORS,
 )
+from pipeline.north_finding.trials_file import COLUMNS, by_key, read_trials
 from pipeline.verdicts.kinds import RANK_BAND, Found
 from pipeline.verdicts.published import Problem
 
@@ -79,7 +78,6 @@ KIND_SENSOR = {"exact": "ideal", "statistical": "real", "approximate": "real"}
 
 RESULT_FILES = {
     "estimates": ("estimates.csv", ESTIMATE_COLUMNS),
-    "mc_trials": ("mc_trials.csv", MC_TRIAL_COLUMNS),
     "error_budget": ("error_budget.csv", ERROR_BUDGET_COLUMNS),
 }
 #: Results files the claims and causes read where present (a scenario without a ranking block
@@ -89,8 +87,10 @@ OPTIONAL_FILES = {
     "ranking_pairs": ("ranking_pairs.csv", RANKING_PAIR_COLUMNS),
     "a2_scan": ("a2_scan.csv", A2_SCAN_COLUMNS),
     "n_rows": ("n_rows.csv", N_ROW_COLUMNS),
-    "mc_trials_judged": ("mc_trials_judged.csv", MC_JUDGED_COLUMNS),
 }
+#: per-trial results, CSV or binary (:func:`pipeline.north_finding.trials_file.read_trials`):
+#: key -> required
+TRIAL_FILES = {"mc_trials": True, "mc_trials_judged": False}
 
 
 def check_item(item: Mapping[str, Any]) -> list[Problem]:
@@ -176,12 +176,30 @@ def read_results(
         path = Path(scenario_dir) / filename
         frame = pd.read_csv(path) if path.is_file() else pd.DataFrame(columns=columns)
         out[key] = _check_frame(frame, columns, str(path))
+    for key, required in TRIAL_FILES.items():
+        frame = read_trials(scenario_dir, key)
+        if frame is None and required:
+            path = Path(scenario_dir) / f"{key}.csv"
+            raise ValueError(f"{path}: results file not found (expected columns {COLUMNS[key]})")
+        out[key] = frame if frame is not None else pd.DataFrame(columns=COLUMNS[key])
     prov = Path(scenario_dir) / "provenance.json"
     out["provenance"] = json.loads(prov.read_text(encoding="utf-8")) if prov.is_file() else {}
     out["scenario"] = scenario
     out["audit"] = pd.read_csv(audit, dtype=str) if audit is not None else None
     out["published"] = published
     return out
+
+
+def mc_values(results: Mapping[str, Any], method: str, quantity: str, column: str) -> np.ndarray:
+    """``column`` of mc_trials' rows of one method and quantity, in row order (empty if none);
+    the grouping is computed once per results mapping and column."""
+    cache = f"_mc_trials_{column}"
+    groups = results.get(cache) if isinstance(results, Mapping) else None
+    if groups is None:
+        groups = by_key(results["mc_trials"], ["method", "quantity"], column, by_trial=False)
+        if isinstance(results, MutableMapping):
+            results[cache] = groups
+    return groups.get((method, quantity), np.empty(0))
 
 
 def rows(frame: pd.DataFrame, method: str, quantity: str) -> pd.DataFrame:
@@ -224,7 +242,7 @@ def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
     from pipeline.north_finding.judged_n import judged_at, mixed_n
 
     method, quantity = item["select"]["method"], item["quantity"]
-    estimates, trials = results["estimates"], results["mc_trials"]
+    estimates = results["estimates"]
     if item["kind"] == "exact":
         row = _estimate(estimates, "ideal", method, quantity)
         if row is None:
@@ -246,8 +264,8 @@ def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
     cause = for_item(item, results)
     if item["kind"] == "approximate":
         return [_approximate(item, results, cause)]
-    mc = rows(trials, method, quantity)
-    if mc.empty:
+    sample = mc_values(results, method, quantity, "estimate")
+    if sample.size == 0:
         return [
             Found(
                 method=method,
@@ -256,7 +274,6 @@ def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
             )
         ]
     real = _estimate(estimates, "real", method, quantity)
-    sample = mc["estimate"].to_numpy(dtype=float)
     finite = np.isfinite(sample)
     left_out = (
         (
@@ -266,7 +283,7 @@ def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
         else ()
     )
     sample = sample[finite]  # a rank over NaN trials would count them as neither below nor above
-    truth = float(mc["truth"].iloc[0])
+    truth = float(mc_values(results, method, quantity, "truth")[0])
     at = judged_at(results, item)
     weights = None
     if at is not None:

@@ -40,6 +40,7 @@ import pandas as pd
 
 from pipeline.north_finding.columns import METHODS, RANKING_COLUMNS, RANKING_PAIR_COLUMNS
 from pipeline.north_finding.n_inference import MIN_WEIGHT, fmt_grid
+from pipeline.north_finding.trials_file import by_key
 
 __all__ = [
     "NOISE_FREE",
@@ -201,7 +202,7 @@ def _from_trials(trials: pd.DataFrame) -> RankSet | None:
     if trials.empty:
         return None
     rms, pairs = {}, {}
-    errors = {k: g.sort_values("trial")["error_pct"].to_numpy(float) for k, g in trials.groupby(["method", "quantity"], sort=False)}  # fmt: skip
+    errors = by_key(trials, ["method", "quantity"], "error_pct")
     for (m, q), e in errors.items():
         rms[m, q] = float(np.sqrt(np.mean(e**2)))
     for (a, q), ea in errors.items():
@@ -292,18 +293,16 @@ def _posterior_set(results: Mapping[str, pd.DataFrame]) -> RankSet | None:
     if n_rows is None or n_rows.empty or mc is None or mc.empty:
         return None
     weights = posterior_weights(n_rows)
-    missing = sorted(set(weights) - {int(n) for n in mc["n_avg"]})
+    missing = sorted(set(weights) - set(np.unique(mc["n_avg"].to_numpy()).tolist()))
     if missing:
         raise ValueError(
             f"mc_trials_judged.csv: no trials at n_avg = {missing}, where the statistical rows "
             "put posterior weight; the N inference is stale (rerun the infer_n step)"
         )
     errors: dict[tuple[str, str], dict[int, np.ndarray]] = {}
-    picked = mc[mc["n_avg"].isin(list(weights))]
-    for (n, m, q), g in picked.groupby(["n_avg", "method", "quantity"], sort=True):
-        errors.setdefault((str(m), str(q)), {})[int(n)] = g.sort_values("trial")[
-            "error_pct"
-        ].to_numpy(float)
+    for (n, m, q), v in by_key(mc, ["n_avg", "method", "quantity"], "error_pct", sort=True).items():  # fmt: skip
+        if int(n) in weights:  # the N with posterior weight
+            errors.setdefault((str(m), str(q)), {})[int(n)] = v
     rms, pairs, sizes = {}, {}, set()
     for key, by_n in errors.items():
         rms[key] = float(np.sqrt(sum(w * np.mean(by_n[n] ** 2) for n, w in weights.items())))

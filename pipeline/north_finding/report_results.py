@@ -18,7 +18,6 @@ from pipeline.north_finding.columns import (
     ERROR_SOURCES,
     ESTIMATE_COLUMNS,
     MC_SUMMARY_COLUMNS,
-    MC_TRIAL_COLUMNS,
     METHODS,
     QUANTITIES,
     SENSITIVITY_COLUMNS,
@@ -27,6 +26,7 @@ from pipeline.north_finding.columns import (
 from pipeline.north_finding.readings_checks import flag_notes
 from pipeline.north_finding.report_trouble import trouble_blocks
 from pipeline.north_finding.scan_bound import warnings as scan_warnings
+from pipeline.north_finding.trials_file import existing, read_trials
 from pipeline.report.html import format_value, slugify
 from pipeline.report.model import Block, Paragraph, Section, frame_table, not_available
 from pipeline.report.plain import plain_value
@@ -48,6 +48,7 @@ _SCENARIO_FILES = (
     "estimates.csv",
     "mc_summary.csv",
     "mc_trials.csv",
+    "mc_trials.npy",
     "error_budget.csv",
     "provenance.json",
 )
@@ -252,11 +253,14 @@ def scenario_section(d: Path) -> Section:
         if mcs is None
         else frame_table(_sorted(mcs)[MC_SUMMARY_COLUMNS])
     ]
-    trials = read_csv(d / "mc_trials.csv", MC_TRIAL_COLUMNS)
+    trials = read_trials(d, "mc_trials")
     mc.append(
         not_available("mc_trials.csv")
         if trials is None
-        else Paragraph(f"mc_trials.csv: {trials['trial'].nunique()} trials, {len(trials)} rows.")
+        else Paragraph(
+            f"{existing(d, 'mc_trials')[0].name}: {trials['trial'].nunique()} trials, "
+            f"{len(trials)} rows."
+        )
     )
     eb = read_csv(d / "error_budget.csv", ERROR_BUDGET_COLUMNS)
     if eb is None:

@@ -4,7 +4,9 @@ Writes, under ``results/north_finding/<scenario>/`` (columns in pipeline/columns
 
 * ``estimates.csv``: the ideal sensor and the real sensor without noise
   (deterministic error propagation), one row per method and quantity;
-* ``mc_trials.csv`` and ``mc_summary.csv``: the noisy real sensor, Monte Carlo;
+* ``mc_trials.csv`` and ``mc_summary.csv``: the noisy real sensor, Monte Carlo (above
+  :data:`pipeline.north_finding.trials_file.CSV_MAX_TRIALS` trials ``mc_trials.npy``, the
+  binary form of :mod:`pipeline.north_finding.trials_file`);
 * ``error_budget.csv``: the noise-free error with one error source at a time, and
   the Monte Carlo standard deviation as the 'noise' source;
 * ``sensitivity.csv``: Monte Carlo RMS error against the averaging count N;
@@ -46,11 +48,16 @@ from pipeline.north_finding import estimators as est
 from pipeline.north_finding import readings as rd
 from pipeline.north_finding import readings_checks as rc
 from pipeline.north_finding import scan_bound as sb
+from pipeline.north_finding import trials_file as tf
 from pipeline.north_finding.ranking import ranking_frames
 from pipeline.north_finding.scenario import ROOT, Scenario, load_scenario
+from pipeline.north_finding.trials_file import difference as _difference
+from pipeline.north_finding.trials_file import error_pct as _error_pct
+from pipeline.north_finding.trials_file import ordered as _ordered
+from pipeline.north_finding.trials_file import trials_frame
 from pipeline.north_finding.trouble import TROUBLE_COLUMNS, Trouble, n_case
 
-__all__ = ["run_scenario", "truth_values", "estimates_frame", "main"]
+__all__ = ["run_scenario", "truth_values", "estimates_frame", "trials_frame", "main"]
 
 CALIBRATION_METHODS = ("L5", "A4", "A5", "A6")
 ALL_SOURCES = ("scale_factor", "misalignment", "bias", "noise")
@@ -85,25 +92,6 @@ def truth_values(sc: Scenario, off: tuple[str, ...] = ()) -> dict[str, float]:
     return out
 
 
-def _difference(estimate: np.ndarray, truth: float, quantity: str) -> np.ndarray:
-    """estimate - truth, wrapped to (-180, 180] deg for the azimuth."""
-    diff = np.asarray(estimate, dtype=float) - truth
-    if quantity == "psi_deg":
-        diff = (diff + 180.0) % 360.0 - 180.0
-    return diff
-
-
-def _error_pct(estimate: np.ndarray, truth: float, quantity: str) -> np.ndarray:
-    """Signed percent error 100 (estimate - truth) / |truth|; NaN where truth is 0 or unknown."""
-    diff = _difference(estimate, truth, quantity)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return 100.0 * diff / abs(truth) if truth != 0 else np.full_like(diff, np.nan, dtype=float)
-
-
-def _ordered(estimates: est.Estimates) -> list[tuple[str, str]]:
-    return [(m, q) for m in col.METHODS for q in col.METHOD_QUANTITIES[m] if (m, q) in estimates]
-
-
 def estimates_frame(
     estimates: est.Estimates,
     truth: dict[str, float],
@@ -130,26 +118,6 @@ def estimates_frame(
             }
         )
     return pd.DataFrame(rows, columns=col.ESTIMATE_COLUMNS)
-
-
-def trials_frame(estimates: est.Estimates, truth: dict[str, float]) -> pd.DataFrame:
-    """Long table of every Monte Carlo trial (vectorised, no loop over trials)."""
-    parts = []
-    for m, q in _ordered(estimates):
-        v = estimates[m, q]
-        parts.append(
-            pd.DataFrame(
-                {
-                    "trial": np.arange(v.size),
-                    "method": m,
-                    "quantity": q,
-                    "truth": truth[q],
-                    "estimate": v,
-                    "error_pct": _error_pct(v, truth[q], q),
-                }
-            )
-        )
-    return pd.concat(parts, ignore_index=True)[col.MC_TRIAL_COLUMNS]
 
 
 def summary_frame(trials: pd.DataFrame) -> pd.DataFrame:
@@ -291,7 +259,8 @@ def _simulated(sc: Scenario, log) -> dict[str, pd.DataFrame]:
         log(f"{sc.name}: ranking Monte Carlo at N = {sc.ranking['n_avg']}")
     return {
         "estimates": estimates,
-        "mc_trials": trials,
+        "mc_trials": {None: mc},  # written by trials_file (CSV or binary)
+        "truth": truth,
         "mc_summary": summary,
         "error_budget": budget,
         "sensitivity": sensitivity,
@@ -375,7 +344,8 @@ def _readings(sc: Scenario, log) -> dict[str, pd.DataFrame]:
         bounds,
     )
     log(f"{sc.name}: estimated from {sc.readings_csv.name} ({readings.tau_deg.size} positions)")
-    frames = {k: _empty(k) for k in OUTPUTS}
+    frames: dict = {k: _empty(k) for k in OUTPUTS}
+    frames |= {"mc_trials": {}, "truth": truth}  # no Monte Carlo: an empty mc_trials.csv
     frames["numerical_trouble"] = trouble.frame(out, "readings")
     compass_deg = float(np.rad2deg(sc.compass_heading))
     tolerance = float(sc.raw["compass"].get("tolerance_deg", rc.DEFAULT_COMPASS_TOLERANCE_DEG))
@@ -411,7 +381,7 @@ def _level(
 
 OUTPUTS = {
     "estimates": ("estimates.csv", col.ESTIMATE_COLUMNS),
-    "mc_trials": ("mc_trials.csv", col.MC_TRIAL_COLUMNS),
+    "mc_trials": ("mc_trials.csv", col.MC_TRIAL_COLUMNS),  # or .npy: trials_file
     "mc_summary": ("mc_summary.csv", col.MC_SUMMARY_COLUMNS),
     "error_budget": ("error_budget.csv", col.ERROR_BUDGET_COLUMNS),
     "sensitivity": ("sensitivity.csv", col.SENSITIVITY_COLUMNS),
@@ -440,7 +410,12 @@ def run_scenario(
     out_dir = Path(out_dir)
     written = {}
     for key, (name, columns) in OUTPUTS.items():
-        written[key] = write_csv(out_dir / name, frames[key], columns)
+        if key != "mc_trials":  # below, in its form
+            written[key] = write_csv(out_dir / name, frames[key], columns)
+    fmt = tf.trials_format(sc.n_trials, sc.trials_file) if sc.kind == "simulated" else "csv"
+    written["mc_trials"] = tf.write_trials(
+        out_dir, "mc_trials", frames["mc_trials"], frames["truth"], fmt
+    )
     prov = provenance(
         scenario=sc.name,
         scenario_file=_relative(sc.path),

@@ -4,7 +4,9 @@ The Monte Carlo runs at every N of the scenario's ``n_inference.n_avg`` on the m
 Carlo's standard normals (trial k seeded by ``SeedSequence([seed, scenario_key, k])``, as in
 :mod:`pipeline.north_finding.run`), so the grid point equal to ``averaging.n_samples``
 reproduces ``mc_trials.csv`` trial for trial. Writes ``n_profile.csv``, ``n_rows.csv`` and
-``mc_trials_judged.csv`` into the scenario's results folder, ``n_robustness.csv``: the
+``mc_trials_judged.csv`` (``.npy`` above :data:`pipeline.north_finding.trials_file.CSV_MAX_TRIALS`
+trials: :mod:`pipeline.north_finding.trials_file`) into the scenario's results folder,
+``n_robustness.csv``: the
 inference rerun at every ``contamination_check`` and on the grid's powers of ten alone, and
 ``n_trouble.csv``: the numerical trouble of the estimators at every grid N (run
 ``n_inference``, case ``N=<n>``; :mod:`pipeline.north_finding.trouble`).
@@ -27,26 +29,26 @@ import pandas as pd
 from pipeline.atomic import write_csv
 from pipeline.config import ConfigError
 from pipeline.north_finding import readings as rd
+from pipeline.north_finding import trials_file as tf
 from pipeline.north_finding.columns import (
-    MC_JUDGED_COLUMNS,
     N_PROFILE_COLUMNS,
     N_ROBUSTNESS_COLUMNS,
     N_ROW_COLUMNS,
 )
 from pipeline.north_finding.judged_n import mixture_rank_of
 from pipeline.north_finding.n_inference import fmt_grid, infer_frames
-from pipeline.north_finding.run import _Runner, scenario_key, trials_frame, truth_values
+from pipeline.north_finding.run import _Runner, scenario_key, truth_values
 from pipeline.north_finding.scenario import Scenario, load_scenario
 from pipeline.north_finding.trouble import TROUBLE_COLUMNS, Trouble, n_case
 from pipeline.verdicts.kinds import RANK_BAND
 
 __all__ = ["OUTPUTS", "infer_scenario", "main"]
 
-#: output key -> (file name, columns)
+#: output key -> (file name, columns); mc_trials_judged (columns MC_JUDGED_COLUMNS) is written
+#: by :func:`pipeline.north_finding.trials_file.write_trials`, as CSV or binary
 OUTPUTS = {
     "n_profile": ("n_profile.csv", N_PROFILE_COLUMNS),
     "n_rows": ("n_rows.csv", N_ROW_COLUMNS),
-    "mc_trials_judged": ("mc_trials_judged.csv", MC_JUDGED_COLUMNS),
     "n_robustness": ("n_robustness.csv", N_ROBUSTNESS_COLUMNS),
     "n_trouble": ("n_trouble.csv", TROUBLE_COLUMNS),
 }
@@ -78,7 +80,7 @@ def infer_scenario(
         return out
 
     def infer(grid: list[int], eps: float) -> dict:
-        return infer_frames(run, lambda e: trials_frame(e, truth), items, grid, eps)
+        return infer_frames(run, None, items, grid, eps)  # the trials: written once below
 
     grid, eps = list(sc.n_inference["n_avg"]), float(sc.n_inference["contamination"])
     frames = infer(grid, eps)
@@ -95,17 +97,22 @@ def infer_scenario(
     )
     frames["n_trouble"] = pd.concat([troubles[n] for n in sorted(troubles)], ignore_index=True)
     best = frames["n_profile"].loc[frames["n_profile"]["inferred"], "n_avg"]
-    weighted = sorted(set(frames["mc_trials_judged"]["n_avg"]))
+    weighted = sorted(grid)  # mc_trials_judged holds every grid N
     log(
         f"{sc.name}: N inferred from {len(items)} statistical rows: "
         f"{', '.join(fmt_grid(int(n)) for n in best)}; rows judged on mixtures over "
         f"{', '.join(fmt_grid(int(n)) for n in weighted)}"
     )
     out_dir = Path(out_dir)
-    return {
+    written = {
         key: write_csv(out_dir / name, frames[key], columns)
         for key, (name, columns) in OUTPUTS.items()
     }
+    fmt = tf.trials_format(sc.n_trials, sc.trials_file)
+    written["mc_trials_judged"] = tf.write_trials(
+        out_dir, "mc_trials_judged", {n: run(n) for n in grid}, truth, fmt
+    )
+    return written
 
 
 def _failing(frames: dict) -> tuple[int, int, str]:

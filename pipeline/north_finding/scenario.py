@@ -9,6 +9,7 @@ with a clear message before any compute starts.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -31,6 +32,7 @@ __all__ = [
     "POSITION_NEEDS",
     "ROOT",
     "scenario_data_files",
+    "scenario_trials_format",
 ]
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -104,6 +106,9 @@ class Scenario:
     readings_csv: Path | None
     ranking: dict[str, Any] | None = None
     n_inference: dict[str, Any] | None = None
+    #: the per-trial results' form: auto (CSV up to trials_file.CSV_MAX_TRIALS trials, else
+    #: binary), csv or npy (pipeline/north_finding/trials_file.py)
+    trials_file: str = "auto"
 
     @property
     def config_sha256(self) -> str:
@@ -177,6 +182,7 @@ def build_scenario(raw: Any, path: Path, base: Path = ROOT) -> Scenario:
         readings_csv=_readings_path(raw, path, base),
         ranking=raw.get("ranking"),
         n_inference=raw.get("n_inference"),
+        trials_file=raw.get("monte_carlo", {}).get("trials_file", "auto"),
     )
     _check_semantics(sc)
     sc.decisions()  # every decision names a real field
@@ -279,3 +285,20 @@ def scenario_data_files(path: str | Path) -> list[str]:
     if isinstance(raw, dict) and isinstance(raw.get("readings_csv"), str):
         return [raw["readings_csv"]]
     return []
+
+
+@cache
+def scenario_trials_format(path: str | Path) -> str:
+    """``csv`` or ``npy``: the form of a scenario's per-trial results
+    (:func:`pipeline.north_finding.trials_file.trials_format` of its ``monte_carlo`` block; CSV
+    for a readings scenario), read when the workflow is parsed to name the step's outputs."""
+    from pipeline.north_finding.trials_file import FORMATS, trials_format
+
+    raw = load_yaml(path)
+    mc = raw.get("monte_carlo") if isinstance(raw, dict) else None
+    if not isinstance(mc, dict) or raw.get("type") != "simulated":
+        return "csv"
+    n, setting = mc.get("n_trials"), mc.get("trials_file", "auto")
+    if not isinstance(n, int) or setting not in ("auto", *FORMATS):
+        return "csv"  # a bad value: the scenario's validation names it
+    return trials_format(n, setting)

@@ -4,6 +4,9 @@
 for _paper in PAPERS.values():
     _ctx = CONTEXTS[_paper.slug]
     for _step in _paper.steps:
+        _scenarios = _step.scenarios(_ctx) if _step.scenarios else _ctx.scenarios
+        if _step.per_scenario and not _scenarios:
+            continue
 
         rule:
             name:
@@ -18,7 +21,7 @@ for _paper in PAPERS.values():
             benchmark:
                 step_log(_paper, _step, "benchmarks")
             wildcard_constraints:
-                scenario="|".join(_ctx.scenarios),
+                scenario="|".join(_scenarios),
                 chunk=r"\d+",
             conda:
                 ENV
