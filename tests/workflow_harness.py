@@ -156,15 +156,15 @@ def once_across_workers(dest: Path, build) -> Path:
     return dest
 
 
-def output_digests(repo: Path) -> dict[str, str]:
+def output_digests(repo: Path, logs: bool = True) -> dict[str, str]:
     """sha256 of every file under results/ and reports/ (benchmark files, which hold wall-clock
-    timings by design, excepted; the job logs included: they print no timings), by path
-    relative to ``repo``."""
+    timings by design, excepted; the job logs included unless ``logs`` is false: they print no
+    timings), by path relative to ``repo``."""
     out = {}
     for top in ("results", "reports"):
         for f in sorted(p for p in (repo / top).rglob("*") if p.is_file()):
             rel = f.relative_to(repo).as_posix()
-            if "/benchmarks/" in rel:  # wall-clock timings
+            if "/benchmarks/" in rel or (not logs and "/logs/" in rel):  # wall-clock timings
                 continue
             out[rel] = hashlib.sha256(f.read_bytes()).hexdigest()
     return out

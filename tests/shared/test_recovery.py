@@ -136,7 +136,7 @@ def test_a_failing_step_keeps_the_previous_outputs(workflow_run, tmp_path):
     repo = tmp_path / "repo"
     shutil.copytree(workflow_run, repo, symlinks=True)
     broken = repo / "results" / "north_finding" / "paper" / "estimates.csv"
-    before = output_digests(repo)
+    before = output_digests(repo, logs=False)  # the failing jobs' logs say why they failed
     broken.write_text("this is not,the estimates\n\x00\n", encoding="utf-8")
     before[broken.relative_to(repo).as_posix()] = hashlib.sha256(broken.read_bytes()).hexdigest()
     r = snakemake("--cores", "1", "--keep-going", cwd=repo, timeout=HANG_GUARD_S)
@@ -144,4 +144,4 @@ def test_a_failing_step_keeps_the_previous_outputs(workflow_run, tmp_path):
     assert r.returncode != 0, out[-3000:]
     assert "Restored previous version of results/north_finding/verdicts.csv" in out, out[-4000:]
     assert "Traceback" not in out, out[-4000:]
-    assert output_digests(repo) == before
+    assert output_digests(repo, logs=False) == before

@@ -144,8 +144,9 @@ def test_cluster_run_identical_to_local(cluster, workflow_run, tmp_path):
     log = r.stdout + r.stderr
     assert r.returncode == 0, log[-5000:]
     submitted = _SUBMIT.findall("\n".join(ln.strip() for ln in log.splitlines()))
-    # the grouped derivations and audits in one job; the altimeter Monte Carlo in another
-    assert len(submitted) >= 2, log[-3000:]
+    # at least the altimeter Monte Carlo is submitted; the grouped derivations and audits are
+    # too when config/job_resources.csv measured them above LOCAL_MAX_S (they sit near it)
+    assert len(submitted) >= 1, log[-3000:]
     assert "localrule " in log, "no step ran as a local rule"
     for target in wanted:
         assert (repo / target).is_file(), target
