@@ -241,20 +241,20 @@ def _resolve(frame: pd.DataFrame, path: Path, mapping: dict) -> dict[str, tuple[
     return used
 
 
-def _hold_period(rows: np.ndarray, values: np.ndarray) -> tuple[int, str]:
-    """(n, "") when the values change only every multiple of n >= 2 rows (a hold of n rows),
-    else (0, what was found)."""
+def _hold_period(rows: np.ndarray, values: np.ndarray) -> tuple[int, int, str]:
+    """(n, first change's row, "") when the values change only every multiple of n >= 2 rows
+    (a hold of n rows), else (0, 0, what was found)."""
     changes = rows[1:][values[1:] != values[:-1]]
     spacing = np.diff(changes)
     if spacing.size == 0:
-        return 0, "fewer than 3 changes of value"
+        return 0, 0, "fewer than 3 changes of value"
     n = int(spacing.min())
     if n < 2:
-        return 0, f"a change of value on consecutive rows ({_rows(changes[1:][spacing < 2])})"
+        return 0, 0, f"a change of value on consecutive rows ({_rows(changes[1:][spacing < 2])})"
     if np.any(spacing % n):
         bad = changes[1:][spacing % n != 0]
-        return 0, f"changes every {n} rows (smallest spacing), but at rows {_rows(bad)} off it"
-    return n, ""
+        return 0, 0, f"changes every {n} rows (smallest spacing), but at rows {_rows(bad)} off it"
+    return n, int(changes[0]), ""
 
 
 def _unhold(alt: np.ndarray, path: Path, col: str, mode: str) -> tuple[np.ndarray, int]:
@@ -275,7 +275,7 @@ def _unhold(alt: np.ndarray, path: Path, col: str, mode: str) -> tuple[np.ndarra
     if mode == "no" or rows.size < 2:
         return alt, 0
     values = alt[rows]
-    n, found = _hold_period(rows, values)
+    n, first, found = _hold_period(rows, values)
     if mode == "check":
         repeats = int(np.count_nonzero(values[1:] == values[:-1]))
         if n and rows.size == alt.size and repeats >= HELD_FRACTION * (rows.size - 1):
@@ -292,7 +292,6 @@ def _unhold(alt: np.ndarray, path: Path, col: str, mode: str) -> tuple[np.ndarra
             f"{path}: --altimeter-held yes: column {col} shows {found}; allowed: a column "
             "whose value changes only every n-th row, n >= 2 fixed"
         )
-    first = rows[1:][values[1:] != values[:-1]][0]
     keep = rows[(rows - first) % n == 0]
     out = np.full_like(alt, np.nan)
     out[keep] = alt[keep]
