@@ -10,8 +10,8 @@
 #                   plugin submits the steps with sbatch; run it from a login node)
 #   make lint       ruff check + ruff format --check, snakefmt --check, snakemake --lint
 #   make system-deps  Debian's chromium (headless browser) and poppler-utils (pdftoppm), if missing
-#   make bench      benchmarks (altimeter_attitude filters vs filterpy; the workflow's CPU seconds
-#                   per step and a no-op `make reproduce`), on demand
+#   make bench      benchmarks (altimeter_attitude filters vs filterpy; a full `make reproduce`
+#                   from nothing in a copy of the checkout, its steps, a no-op), on demand
 #   make lock       regenerate environment.lock from requirements.in
 #   make clean      remove workflow outputs (results/, .snakemake/); keeps .venv
 
@@ -178,7 +178,7 @@ test: $(PROJECT_STAMP) system-deps
 
 bench: $(PROJECT_STAMP)
 	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.altimeter_attitude.benchmark
-	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.bench_workflow
+	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.bench_workflow --full-run
 	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.north_finding.benchmark
 
 lint: $(PROJECT_STAMP)

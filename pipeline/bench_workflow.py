@@ -1,7 +1,7 @@
 """Workflow benchmark (issue 15): CPU seconds per step of the last reproduction, and a no-op.
 
-``python -m pipeline.bench_workflow [--results results] [--baseline DIR] [--noop-repeat 3]``
-(part of ``make bench``). It reads the Snakemake benchmark files of every job,
+``python -m pipeline.bench_workflow [--results results] [--baseline DIR] [--noop-repeat 3]
+[--full-run]`` (part of ``make bench``). It reads the Snakemake benchmark files of every job,
 ``<results>/<paper>/benchmarks/<step>[_<scenario>].tsv`` and ``<results>/benchmarks/*.tsv``
 (columns ``s`` = wall seconds and ``cpu_time`` = user + system CPU seconds of the job's
 processes), and prints per step the jobs, CPU and wall seconds, then the totals against the
@@ -14,6 +14,16 @@ issue's targets:
   range of CPU seconds, user + system of make and every process it starts), only when a dry
   run finds nothing to do (otherwise it would be a real run, and it is not started).
 
+``--full-run`` measures the target itself instead of reading the last run's files: the
+checkout's files (tracked and untracked, not ignored; so uncommitted edits count) are copied
+to a temporary directory, with no results, no Snakemake state and an empty numba cache, as a
+fresh clone has, and ``make workflow`` (what ``make reproduce`` runs after set-up, the
+Snakemake report included) runs there with this checkout's ``.venv`` on 2 cores. It prints the
+wall time, the CPU seconds of every process it started, the load average before and after
+(the wall time holds only on an idle machine), the per-step table of that run and its no-op
+rerun. Snakemake samples a job's CPU time every second or so, so the per-step CPU seconds
+under-count short jobs; the total is exact (``getrusage`` of the children).
+
 ``--baseline DIR`` adds the same columns for another results directory (e.g. a checkout
 before a change) and the difference. The timings are of this machine and this run; they are
 not results (nothing here is written under results/ or reports/).
@@ -25,13 +35,25 @@ import argparse
 import csv
 import os
 import resource
+import shutil
 import statistics
 import subprocess
 import sys
+import tempfile
+import time
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["StepTime", "collect", "main", "measure_noop", "step_table"]
+__all__ = [
+    "FullRun",
+    "StepTime",
+    "checkout_files",
+    "collect",
+    "main",
+    "measure_full_run",
+    "measure_noop",
+    "step_table",
+]
 
 #: issue 15's targets, seconds
 FULL_RUN_TARGET_S = 60.0
@@ -134,10 +156,11 @@ def _children_cpu() -> float:
     return usage.ru_utime + usage.ru_stime
 
 
-def measure_noop(root: Path, repeat: int) -> list[float] | str:
-    """CPU seconds of ``repeat`` no-op ``make reproduce`` runs in ``root``, or why not run."""
+def measure_noop(root: Path, repeat: int, venv: Path | None = None) -> list[float] | str:
+    """CPU seconds of ``repeat`` no-op ``make reproduce`` runs in ``root``, or why not run
+    (``venv``: another checkout's environment, run through ``make workflow``)."""
     env = dict(os.environ, PYTHONPATH=str(root))
-    snakemake = root / ".venv" / "bin" / "snakemake"
+    snakemake = (venv or root / ".venv") / "bin" / "snakemake"
     dry = subprocess.run(
         [str(snakemake), "--dry-run", "--cores", str(CORES), "--rerun-triggers", "mtime"]
         + ["params", "input", "code", "software-env"],
@@ -153,8 +176,9 @@ def measure_noop(root: Path, repeat: int) -> list[float] | str:
     times = []
     for _ in range(repeat):
         before = _children_cpu()
+        target = ["workflow", f"VENV={venv}"] if venv else ["reproduce"]
         done = subprocess.run(
-            ["make", "--no-print-directory", "reproduce"], cwd=root, capture_output=True
+            ["make", "--no-print-directory", *target], cwd=root, capture_output=True
         )
         if done.returncode != 0:
             return f"not measured: make reproduce failed with status {done.returncode}"
@@ -162,11 +186,103 @@ def measure_noop(root: Path, repeat: int) -> list[float] | str:
     return times
 
 
+@dataclass(frozen=True)
+class FullRun:
+    """One ``make workflow`` from nothing: wall and CPU seconds, load average around it."""
+
+    wall_s: float
+    cpu_s: float
+    load_before: float
+    load_after: float
+    returncode: int
+    copy: Path
+
+
+def checkout_files(root: Path) -> list[str]:
+    """The checkout's files as a fresh clone with this checkout's edits would have them:
+    tracked and untracked, without the ignored ones (results, .venv, caches)."""
+    out = subprocess.run(
+        ["git", "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
+        cwd=root,
+        capture_output=True,
+        check=True,
+    ).stdout
+    return sorted({f for f in out.decode().split("\0") if f and (root / f).is_file()})
+
+
+def measure_full_run(root: Path, work: Path, cores: int = CORES) -> FullRun:
+    """Copy ``root``'s files to ``work``/repo and run ``make workflow`` there (see the
+    module docstring); the copy is left for the per-step table and the no-op."""
+    copy = work / "repo"
+    for rel in checkout_files(root):
+        dest = copy / rel
+        dest.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy2(root / rel, dest)
+    venv = (root / ".venv").resolve()
+    env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    load_before = os.getloadavg()[0]
+    cpu_before = _children_cpu()
+    start = time.monotonic()
+    done = subprocess.run(
+        ["make", "--no-print-directory", "workflow", f"VENV={venv}", f"CORES={cores}"],
+        cwd=copy,
+        env=env,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+    )
+    wall = time.monotonic() - start
+    return FullRun(
+        wall, _children_cpu() - cpu_before, load_before, os.getloadavg()[0], done.returncode, copy
+    )
+
+
+def _full_run_report(args: argparse.Namespace) -> int:
+    with tempfile.TemporaryDirectory(prefix="bench-workflow-") as tmp:
+        print("full run from nothing (a copy of this checkout, make workflow, 2 cores) ...")
+        run = measure_full_run(Path.cwd(), Path(tmp))
+        if run.returncode != 0:
+            print(f"error: make workflow failed in the copy (status {run.returncode})")
+            return 1
+        steps = collect(run.copy / "results")
+        print(step_table(steps))
+        verdict = "meets it" if run.wall_s <= FULL_RUN_TARGET_S else "misses it"
+        print()
+        print(
+            f"full run: {run.wall_s:.1f} s wall, {run.cpu_s:.1f} CPU-s in all (make, Snakemake, "
+            f"jobs, Snakemake's report); target {FULL_RUN_TARGET_S:.0f} s wall: {verdict}"
+        )
+        print(
+            f"          {run.cpu_s / CORES:.1f} s is the least wall time 2 cores need for that "
+            f"CPU; load average {run.load_before:.2f} before, {run.load_after:.2f} after "
+            "(the wall time holds for an idle machine only)"
+        )
+        if args.noop_repeat:
+            _print_noop(measure_noop(run.copy, args.noop_repeat, (Path.cwd() / ".venv").resolve()))
+    return 0
+
+
+def _print_noop(noop: list[float] | str) -> None:
+    if isinstance(noop, str):
+        print(f"no-op make reproduce: {noop}")
+        return
+    med = statistics.median(noop)
+    print(
+        f"no-op make reproduce: median {med:.2f} CPU-s of {len(noop)} "
+        f"(range {min(noop):.2f}-{max(noop):.2f}; target {NOOP_TARGET_S:.0f} s): "
+        + ("meets it" if med <= NOOP_TARGET_S else "misses it")
+    )
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", type=Path, default=Path("results"))
     parser.add_argument("--baseline", type=Path, default=None, help="results dir to compare")
     parser.add_argument("--noop-repeat", type=int, default=3, help="0 skips the no-op run")
+    parser.add_argument(
+        "--full-run",
+        action="store_true",
+        help="run the whole workflow from nothing in a copy of this checkout and time it",
+    )
     args = parser.parse_args(argv)
     for name, path in (("--results", args.results), ("--baseline", args.baseline)):
         if path is not None and not path.is_dir():
@@ -175,6 +291,8 @@ def main(argv: list[str] | None = None) -> int:
     if args.noop_repeat < 0:
         print(f"error: --noop-repeat {args.noop_repeat}: must be >= 0", file=sys.stderr)
         return 2
+    if args.full_run:
+        return _full_run_report(args)
     try:
         steps = collect(args.results)
         baseline = collect(args.baseline) if args.baseline else None
@@ -200,16 +318,7 @@ def main(argv: list[str] | None = None) -> int:
     else:
         print("          the jobs ran in more than one run: no single run's wall time")
     if args.noop_repeat:
-        noop = measure_noop(Path.cwd(), args.noop_repeat)
-        if isinstance(noop, str):
-            print(f"no-op make reproduce: {noop}")
-        else:
-            med = statistics.median(noop)
-            print(
-                f"no-op make reproduce: median {med:.2f} CPU-s of {len(noop)} "
-                f"(range {min(noop):.2f}-{max(noop):.2f}; target {NOOP_TARGET_S:.0f} s): "
-                + ("meets it" if med <= NOOP_TARGET_S else "misses it")
-            )
+        _print_noop(measure_noop(Path.cwd(), args.noop_repeat))
     return 0
 
 

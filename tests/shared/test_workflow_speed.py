@@ -153,3 +153,34 @@ def test_bench_bad_tsv(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> No
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("error: ") and "audit.tsv" in err[0]
     assert "cpu_time" in err[0]
+
+
+def _git_repo(tmp_path: Path) -> Path:
+    repo = tmp_path / "src"
+    (repo / "pipeline").mkdir(parents=True)
+    (repo / ".gitignore").write_text("results/\n.venv/\n")
+    (repo / "pipeline" / "a.py").write_text("x = 1\n")
+    (repo / "results").mkdir()
+    (repo / "results" / "old.csv").write_text("stale\n")
+    subprocess.run(["git", "init", "-q"], cwd=repo, check=True)
+    subprocess.run(["git", "add", "."], cwd=repo, check=True)
+    (repo / "pipeline" / "new.py").write_text("y = 2\n")  # untracked, not ignored: an edit
+    return repo
+
+
+def test_full_run_copies_a_fresh_clone_with_the_edits(tmp_path: Path) -> None:
+    """The full-run benchmark starts from what a fresh clone with this checkout's edits has:
+    tracked and untracked files, nothing ignored (no results, no venv, no caches)."""
+    repo = _git_repo(tmp_path)
+    assert bench_workflow.checkout_files(repo) == [".gitignore", "pipeline/a.py", "pipeline/new.py"]
+
+
+def test_full_run_reports_make_failure(tmp_path: Path, monkeypatch, capsys) -> None:
+    """A failing ``make workflow`` in the copy is reported, not timed as a run."""
+    repo = _git_repo(tmp_path)
+    (repo / "Makefile").write_text("workflow:\n\t@echo boom >&2; exit 3\n")
+    (repo / ".venv").mkdir()
+    monkeypatch.chdir(repo)
+    assert bench_workflow.main(["--full-run", "--noop-repeat", "0"]) == 1
+    out = capsys.readouterr().out
+    assert "make workflow failed in the copy (status 2)" in out
