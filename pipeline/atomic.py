@@ -13,6 +13,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pandas as pd
 
 __all__ = ["write_atomic", "write_text", "write_bytes", "write_csv", "write_json"]
@@ -55,14 +56,43 @@ def write_bytes(path: str | os.PathLike[str], data: bytes) -> Path:
     return write_atomic(path, lambda p: p.write_bytes(data))
 
 
+def _formatted(frame: pd.DataFrame) -> pd.DataFrame:
+    """``frame`` with every float64 column as the strings ``to_csv(float_format="%.17g")``
+    writes (other float dtypes are left to that ``float_format``) (NaN as an empty field), formatted in one pass per column rather than value by
+    value through pandas' formatter (the same bytes, several times faster).
+
+    >>> f = pd.DataFrame({"x": [0.1, float("nan"), -0.0, 1e300, float("inf")], "n": range(5)})
+    >>> kw = dict(index=False, lineterminator="\\n")
+    >>> kw["float_format"] = "%.17g"
+    >>> _formatted(f).to_csv(**kw) == f.to_csv(**kw)
+    True
+    """
+    if not frame.columns.is_unique:
+        return frame
+    columns = {}
+    for name, col in frame.items():
+        if col.dtype == "float64":
+            values = col.to_numpy()
+            text = [f"{v:.17g}" for v in values.tolist()]
+            for i in np.flatnonzero(np.isnan(values)).tolist():
+                text[i] = ""
+            columns[name] = pd.Series(text, index=col.index, dtype=object)
+        else:
+            columns[name] = col
+    return pd.DataFrame(columns, index=frame.index, columns=frame.columns)
+
+
 def write_csv(path: str | os.PathLike[str], frame: pd.DataFrame, columns: list[str]) -> Path:
-    """Write ``frame[columns]`` as CSV atomically; fails if a contract column is missing."""
+    """Write ``frame[columns]`` as CSV atomically; fails if a contract column is missing.
+    Floats are written with ``%.17g`` (round-trip exact), NaN as an empty field."""
     missing = [c for c in columns if c not in frame.columns]
     if missing:
         raise ValueError(f"{path}: missing contract columns {missing}")
     return write_atomic(
         path,
-        lambda p: frame[columns].to_csv(p, index=False, float_format="%.17g", lineterminator="\n"),
+        lambda p: _formatted(frame[columns]).to_csv(
+            p, index=False, float_format="%.17g", lineterminator="\n"
+        ),
     )
 
 
