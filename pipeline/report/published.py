@@ -22,8 +22,10 @@ applied (its reason below the table); the verdict is a token the renderers show 
 
 from __future__ import annotations
 
+import copy
 import re
 from collections.abc import Mapping
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -53,12 +55,24 @@ __all__ = [
 ]
 
 
+#: YAML's safe loader, libyaml's C parser when PyYAML has it (the same documents, faster)
+SAFE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
+
 def load_published(path: Path) -> Mapping[str, Any]:
-    """``config/published/<slug>.yaml`` as a mapping; an absent file is empty."""
+    """``config/published/<slug>.yaml`` as a mapping; an absent file is empty. Parsed once
+    per process and file version (a report reads it for every section): a fresh copy each
+    call."""
     if not path.is_file():
         return {}
+    stat = path.stat()
+    return copy.deepcopy(_parsed(Path(path).resolve(), stat.st_mtime_ns, stat.st_size))
+
+
+@cache
+def _parsed(path: Path, mtime_ns: int, size: int) -> dict[str, Any]:
     with path.open(encoding="utf-8") as fh:
-        published = yaml.safe_load(fh) or {}
+        published = yaml.load(fh, Loader=SAFE_LOADER) or {}
     if not isinstance(published, dict):
         raise ValueError(f"{path}: expected a mapping")
     return published
