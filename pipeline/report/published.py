@@ -60,22 +60,19 @@ SAFE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
 
 def load_published(path: Path) -> Mapping[str, Any]:
-    """``config/published/<slug>.yaml`` as a mapping; an absent file is empty. Parsed once
-    per process and file version (a report reads it for every section): a fresh copy each
-    call."""
+    """``config/published/<slug>.yaml`` as a mapping; an absent file is empty. A text is parsed
+    once per process (a report reads the file for every section): a fresh copy each call."""
     if not path.is_file():
         return {}
-    stat = path.stat()
-    return copy.deepcopy(_parsed(Path(path).resolve(), stat.st_mtime_ns, stat.st_size))
+    published = _parsed(path.read_text(encoding="utf-8"))
+    if not isinstance(published, dict):
+        raise ValueError(f"{path}: expected a mapping")
+    return copy.deepcopy(published)
 
 
 @cache
-def _parsed(path: Path, mtime_ns: int, size: int) -> dict[str, Any]:
-    with path.open(encoding="utf-8") as fh:
-        published = yaml.load(fh, Loader=SAFE_LOADER) or {}
-    if not isinstance(published, dict):
-        raise ValueError(f"{path}: expected a mapping")
-    return published
+def _parsed(text: str) -> Any:
+    return yaml.load(text, Loader=SAFE_LOADER) or {}
 
 
 def group_label(item: Mapping[str, Any] | None) -> str:
