@@ -58,28 +58,30 @@ def write_bytes(path: str | os.PathLike[str], data: bytes) -> Path:
 
 def _formatted(frame: pd.DataFrame) -> pd.DataFrame:
     """``frame`` with every float64 column as the strings ``to_csv(float_format="%.17g")``
-    writes (other float dtypes are left to that ``float_format``) (NaN as an empty field), formatted in one pass per column rather than value by
-    value through pandas' formatter (the same bytes, several times faster).
+    writes (NaN as an empty field; other float dtypes are left to that ``float_format``),
+    formatted in one pass per column rather than value by value through pandas' formatter
+    (the same bytes, several times faster).
 
     >>> f = pd.DataFrame({"x": [0.1, float("nan"), -0.0, 1e300, float("inf")], "n": range(5)})
     >>> kw = dict(index=False, lineterminator="\\n")
     >>> kw["float_format"] = "%.17g"
     >>> _formatted(f).to_csv(**kw) == f.to_csv(**kw)
     True
+    >>> g = pd.concat([f, f]).set_axis(["x", "x"], axis=1)  # repeated index and names
+    >>> _formatted(g).to_csv(**kw) == g.to_csv(**kw), g["x"].dtypes.tolist()
+    (True, [dtype('float64'), dtype('int64')])
     """
-    if not frame.columns.is_unique:
-        return frame
-    columns = {}
-    for name, col in frame.items():
-        if col.dtype == "float64":
-            values = col.to_numpy()
-            text = [f"{v:.17g}" for v in values.tolist()]
-            for i in np.flatnonzero(np.isnan(values)).tolist():
-                text[i] = ""
-            columns[name] = pd.Series(text, index=col.index, dtype=object)
-        else:
-            columns[name] = col
-    return pd.DataFrame(columns, index=frame.index, columns=frame.columns)
+    out = frame.copy(deep=False)
+    for loc, dtype in enumerate(frame.dtypes):
+        if dtype != np.float64:
+            continue
+        values = frame.iloc[:, loc].to_numpy()
+        text = [f"{v:.17g}" for v in values.tolist()]
+        for i in np.flatnonzero(np.isnan(values)).tolist():
+            text[i] = ""
+        # by position (repeated names or index labels are fine), kept as object (no inference)
+        out.isetitem(loc, pd.Series(text, index=frame.index, dtype=object))
+    return out
 
 
 def write_csv(path: str | os.PathLike[str], frame: pd.DataFrame, columns: list[str]) -> Path:
