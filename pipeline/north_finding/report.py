@@ -25,8 +25,8 @@ import pandas as pd
 from pipeline.columns import AUDIT_COLUMNS, AUDIT_STATUSES, VERDICT_COLUMNS, VERDICT_KINDS, VERDICTS
 from pipeline.north_finding.columns import ERROR_BUDGET_COLUMNS
 from pipeline.north_finding.error_propagation import azimuth_error_budget, noise_free_agreement
-from pipeline.north_finding.figures import load_published
 from pipeline.north_finding.paper import CITATION, PAPER, TITLE
+from pipeline.north_finding.published_items import load_published
 from pipeline.north_finding.report_n import n_inference_section
 from pipeline.north_finding.report_results import (
     assumptions_section,

@@ -130,7 +130,7 @@ def load_decisions(path: str | Path) -> tuple[str, pd.DataFrame]:
     ``field, value, why`` with the value resolved at the dotted ``field``."""
     path = Path(path)
     with path.open(encoding="utf-8") as fh:
-        data = yaml.safe_load(fh) or {}
+        data = yaml.load(fh, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader)) or {}
     if not isinstance(data, Mapping):
         raise ValueError(f"{path}: a scenario config must be a mapping")
     description = str(data.get("description") or "").strip()

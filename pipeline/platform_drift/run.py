@@ -103,10 +103,13 @@ def simulate_errors(
     trouble: list[pd.DataFrame] | None = None,
     run: str = "main",
     case_prefix: str = "",
+    ground_speed: bool = True,
 ) -> tuple[pd.DataFrame, pd.DataFrame, dict]:
     """Errors of every case and scheme over ``duration``; (errors, diagnostic, info). Given
     ``trouble`` (a list), appends the numerical trouble of every curve (rows of
-    :data:`~pipeline.trouble.TROUBLE_COLUMNS`, run ``run``, case ``case_prefix + case``)."""
+    :data:`~pipeline.trouble.TROUBLE_COLUMNS`, run ``run``, case ``case_prefix + case``).
+    ``ground_speed=False`` leaves ``max_ground_speed_m_s`` out of ``info`` (it samples the
+    trajectory 720 times; a caller that discards ``info`` need not)."""
     traj = sc.trajectory()
     t = sc.times(duration)
     lat_true, lon_true = traj.latlon(t)
@@ -148,12 +151,13 @@ def simulate_errors(
             "proposed_simulated": float(curves["none", "proposed_simulated"].max()),
             "strapdown": float(curves["none", "strapdown"].max()),
         }
-    ground = [traj.at(float(x)) for x in t[:: max(1, len(t) // 720)]]
-    # eq. 8: the Earth-relative velocity v_i - omega_ie x r
-    w_ie = frames.earth_rate_e(sc.earth.omega_e)
-    info["max_ground_speed_m_s"] = float(
-        max(np.linalg.norm(gen.ground_velocity(*g.v_i, *g.r_i, *w_ie)) for g in ground)
-    )
+    if ground_speed:
+        ground = [traj.at(float(x)) for x in t[:: max(1, len(t) // 720)]]
+        # eq. 8: the Earth-relative velocity v_i - omega_ie x r
+        w_ie = frames.earth_rate_e(sc.earth.omega_e)
+        info["max_ground_speed_m_s"] = float(
+            max(np.linalg.norm(gen.ground_velocity(*g.v_i, *g.r_i, *w_ie)) for g in ground)
+        )
     return _long(t, curves), _long(t, diag), info
 
 

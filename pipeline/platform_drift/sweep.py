@@ -16,23 +16,16 @@ import dataclasses
 from pathlib import Path
 
 import matplotlib
+import numpy as np
+import pandas as pd
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-
-from pipeline.atomic import write_csv  # noqa: E402
-from pipeline.figure_files import write_png_svg  # noqa: E402
-from pipeline.platform_drift.figures_style import (  # noqa: E402
-    DPI,
-    RC,
-    STYLE,
-    WIDTH_IN,
-    legend_below,
-)
-from pipeline.platform_drift.run import simulate_errors  # noqa: E402
-from pipeline.platform_drift.scenario import load_scenario  # noqa: E402
+from pipeline.atomic import write_csv
+from pipeline.figure_files import write_png_svg
+from pipeline.platform_drift.figures_style import DPI, RC, STYLE, WIDTH_IN, legend_below
+from pipeline.platform_drift.run import simulate_errors
+from pipeline.platform_drift.scenario import load_scenario
 
 __all__ = ["SWEEP_COLUMNS", "LATITUDES_DEG", "sweep", "plot", "main"]
 
@@ -56,7 +49,13 @@ def sweep(
     for lat in latitudes:
         moved = dataclasses.replace(sc, route=dataclasses.replace(sc.route, lat0=np.deg2rad(lat)))
         errors, diag, _ = simulate_errors(
-            moved, 7200.0, lambda m: None, trouble, "sweep", f"latitude {lat:g} deg, "
+            moved,
+            7200.0,
+            lambda m: None,
+            trouble,
+            "sweep",
+            f"latitude {lat:g} deg, ",
+            ground_speed=False,
         )
         both = pd.concat([errors, diag], ignore_index=True)
         final = both[both["t_s"] == both["t_s"].max()]
@@ -72,7 +71,10 @@ def plot(frame: pd.DataFrame, png_path: str | Path) -> list[Path]:
     """Fig. 9 (not in the paper) of the latitude sweep, written to ``png_path`` and the SVG
     beside it; returns both paths."""
     with matplotlib.rc_context(RC):
-        fig, axes = plt.subplots(1, 2, figsize=(WIDTH_IN, 2.6))
+        # an Agg canvas of its own (no pyplot: its import and figure state are not needed)
+        fig = Figure(figsize=(WIDTH_IN, 2.6))
+        FigureCanvasAgg(fig)
+        axes = fig.subplots(1, 2)
         titles = {"ch1": "channel-1 drift 0.01 deg/h", "ch3": "channel-3 drift 0.1 deg/h"}
         for ax, case in zip(axes, CASES, strict=True):
             for scheme, style in STYLE.items():
@@ -90,10 +92,7 @@ def plot(frame: pd.DataFrame, png_path: str | Path) -> list[Path]:
         fig.suptitle("Fig. 9 (not in the paper): error at 2 h against latitude, vehicle at rest")
         bottom = legend.get_window_extent(fig.canvas.get_renderer()).height / fig.bbox.height
         fig.tight_layout(rect=(0, bottom + 0.01, 1, 0.95), pad=0.3)
-    try:
-        return write_png_svg(fig, png_path, DPI)
-    finally:
-        plt.close(fig)
+    return write_png_svg(fig, png_path, DPI)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -15,6 +15,7 @@ published number.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from functools import cache
 from typing import Any
 
 import numpy as np
@@ -22,6 +23,7 @@ import numpy as np
 from pipeline.generated import platform_drift as gen
 from pipeline.platform_drift.analytic import eq36_undefined
 from pipeline.platform_drift.scenario import Scenario
+from pipeline.platform_drift.trajectory import Trajectory
 
 __all__ = [
     "EQUATIONS",
@@ -50,9 +52,14 @@ def max_ground_speed_m_s(sc: Scenario) -> float:
 
     Ground speed = R_G sqrt(lat_dot^2 + (lon_dot cos lat)^2) of the true trajectory
     (Earth-relative rates of :meth:`Trajectory.at`), sampled at 721 times over the run.
+    Computed once per trajectory and run length (the verdicts ask it of every row).
     """
-    traj = sc.trajectory()
-    t_end = max(sc.duration, sc.long_duration or 0.0)
+    return _max_ground_speed(sc.earth, sc.route, sc.psi0, max(sc.duration, sc.long_duration or 0.0))
+
+
+@cache
+def _max_ground_speed(earth, route, psi0: float, t_end: float) -> float:
+    traj = Trajectory(earth, route, psi0)
     best = 0.0
     for t in np.linspace(0.0, t_end, _SAMPLES):
         tr = traj.at(float(t))

@@ -48,11 +48,12 @@ def _fmt_seed(prov: Mapping[str, Any]) -> str:
 def _config_now(path: Path) -> str:
     """sha256 of the scenario file as parsed now (pipeline.config.sha256_of)."""
     from pipeline.config import sha256_of
+    from pipeline.report.published import SAFE_LOADER
 
     if not path.is_file():
         return "file absent"
     with path.open(encoding="utf-8") as fh:
-        return sha256_of(yaml.safe_load(fh))
+        return sha256_of(yaml.load(fh, Loader=SAFE_LOADER))
 
 
 def _scenario_dirs(rdir: Path) -> list[Path]:

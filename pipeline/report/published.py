@@ -22,8 +22,10 @@ applied (its reason below the table); the verdict is a token the renderers show 
 
 from __future__ import annotations
 
+import copy
 import re
 from collections.abc import Mapping
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -53,15 +55,24 @@ __all__ = [
 ]
 
 
+#: YAML's safe loader, libyaml's C parser when PyYAML has it (the same documents, faster)
+SAFE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
+
 def load_published(path: Path) -> Mapping[str, Any]:
-    """``config/published/<slug>.yaml`` as a mapping; an absent file is empty."""
+    """``config/published/<slug>.yaml`` as a mapping; an absent file is empty. A text is parsed
+    once per process (a report reads the file for every section): a fresh copy each call."""
     if not path.is_file():
         return {}
-    with path.open(encoding="utf-8") as fh:
-        published = yaml.safe_load(fh) or {}
+    published = _parsed(path.read_text(encoding="utf-8"))
     if not isinstance(published, dict):
         raise ValueError(f"{path}: expected a mapping")
-    return published
+    return copy.deepcopy(published)
+
+
+@cache
+def _parsed(text: str) -> Any:
+    return yaml.load(text, Loader=SAFE_LOADER) or {}
 
 
 def group_label(item: Mapping[str, Any] | None) -> str:
