@@ -215,6 +215,12 @@ def scaling(scenario: Path, sizes: list[int], steps: int, max_cpu_s: float, full
             f" {m['peak_rss_gb']:.2f} GB ({'met' if m['peak_rss_gb'] < MC_RSS_TARGET_GB else 'NOT met'})"
             f" [{how}]"
         )
+        per = 1e6 * m["cpu_s"] / (MC_RUNS_TARGET * steps)
+        need = 1e6 * MC_CPU_TARGET_S / (MC_RUNS_TARGET * steps)
+        print(
+            f"   i.e. {per:.2f} us per run-step, all filters and results files (target <= "
+            f"{need:.2f}: {'met' if per <= need else 'NOT met'}) [{how}]"
+        )
 
 
 def main(argv: list[str] | None = None) -> int:
