@@ -7,17 +7,25 @@ outputs as a tuple of floats (scalars need no broadcasting), so a kernel can ind
 
 numba's on-disk cache goes to ``<base>/<key>``: ``base`` is ``NUMBA_CACHE_DIR`` if set, else
 ``.snakemake/numba-cache`` of the checkout (ignored by git, removed by ``make clean``), so no
-file is written into the source tree and a fresh clone compiles once (~20 CPU-s) on first
+file is written into the source tree and a fresh clone compiles once (~10 CPU-s, all five kernels) on first
 use. ``key`` hashes this file, the generated module and the numba version: numba invalidates a
 cached function only when its own file changes, not when a function it calls from another
 file does. The kernels (kernels_euler, kernels_c, mc_sums) call only their own module's
 functions and the compiled generated ones of this module, so a regenerated formula or a
 changed option here must start a fresh cache, and does (only files the kernels import are
 read, so the workflow's code inputs stay those of the import graph).
+
+The kernels called from Python are declared with :func:`kernel`: a process's first call of
+one (numba loads it from the cache or compiles and saves it) holds an exclusive lock on the
+cache directory, so jobs that start together on a fresh clone (the workflow runs the three
+scenarios, the sweep and the UKF tuning side by side) compile each kernel once between them:
+the others wait, idle, and then load it (~0.1 CPU-s) instead of compiling it again.
 """
 
 from __future__ import annotations
 
+import fcntl
+import functools
 import hashlib
 import os
 from importlib.metadata import version
@@ -57,6 +65,7 @@ __all__ = [
     "euler_process_noise",
     "euler_state_jacobian",
     "gamma_term_closed",
+    "kernel",
     "njit",
     "normalisation_error",
     "third_row_rotation",
@@ -76,6 +85,45 @@ def njit(fn):
     """``numba.njit(cache=True)``: strict IEEE arithmetic (no fastmath) with numpy's error
     model (x / 0 is inf or NaN, as in the numpy code, not ZeroDivisionError), cached on disk."""
     return numba.njit(cache=True, error_model="numpy")(fn)
+
+
+def _compile_lock_path() -> Path:
+    """The lock file in the directory numba caches to (read by numba at its import)."""
+    path = Path(numba.config.CACHE_DIR or os.environ["NUMBA_CACHE_DIR"])
+    path.mkdir(parents=True, exist_ok=True)
+    return path / "compile.lock"
+
+
+def jit_lock_path() -> Path:
+    return _compile_lock_path()
+
+
+def kernel(fn):
+    """:func:`njit` for a kernel called from Python: its first call in a process (cache load
+    or compilation) holds the cache directory's lock (``compile.lock``, ``flock``), so no two
+    processes compile the same kernel at once; a waiting one then loads what the other saved.
+    The dispatcher is ``.dispatcher``."""
+    dispatcher = njit(fn)
+
+    @functools.wraps(fn)
+    def call(*args):
+        if dispatcher.signatures:
+            return dispatcher(*args)
+        try:
+            fd = os.open(jit_lock_path(), os.O_RDWR | os.O_CREAT, 0o644)
+        except OSError:  # a read-only cache directory: numba then compiles without caching
+            return dispatcher(*args)
+        try:
+            try:
+                fcntl.flock(fd, fcntl.LOCK_EX)
+            except OSError:  # a file system without locks (some network mounts): no lock
+                pass
+            return dispatcher(*args)
+        finally:
+            os.close(fd)  # (releases the lock)
+
+    call.dispatcher = dispatcher
+    return call
 
 
 # the generated functions the kernels call (scalar in, tuple of floats out)

@@ -19,7 +19,7 @@ from pipeline.altimeter_attitude import jit
 __all__ = ["complementary_runs", "linear_kf_chunk"]
 
 
-@jit.njit
+@jit.kernel
 def complementary_runs(gyro, accel, c0, dt, k_p, k_i):
     """PI complementary filter over runs (N, T): c (N, T+1, 3) (run_complementary):
 
@@ -32,9 +32,10 @@ def complementary_runs(gyro, accel, c0, dt, k_p, k_i):
     z = np.empty(3)
     e = np.empty(3)
     for i in range(N):
-        c[:] = c0[i]
-        z[:] = 0.0
-        cs[i, 0] = c
+        for a in range(3):
+            c[a] = c0[i, a]
+            z[a] = 0.0
+            cs[i, 0, a] = c[a]
         for k in range(T):
             f = accel[i, k]
             ca = jit.accel_third_row(f[0], f[1], f[2])
@@ -57,11 +58,11 @@ def complementary_runs(gyro, accel, c0, dt, k_p, k_i):
             norm = math.sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2])
             for a in range(3):
                 c[a] = c[a] / norm
-            cs[i, k + 1] = c
+                cs[i, k + 1, a] = c[a]
     return cs
 
 
-@jit.njit
+@jit.kernel
 def linear_kf_chunk(
     x, P, exp_w, f_psi, f_xi, vertical, a43, L, g, k, dt, gc, q_diag, R, alt,
     use_gamma, use_update, a_dt_max, c0, cs, var,
@@ -139,8 +140,10 @@ def linear_kf_chunk(
                 for b in range(5):
                     t += F[r, b] * xm[b]
                 xn[r] = t + L[r] * g
-            xm[:] = xn
-            Pm[:, :] = Pn
+            for r in range(5):
+                xm[r] = xn[r]
+                for s in range(5):
+                    Pm[r, s] = Pn[r, s]
             z = alt[i, step + 1]
             if use_update[m] and not math.isnan(z):
                 S = Pm[4, 4] + R
@@ -152,13 +155,16 @@ def linear_kf_chunk(
                 for r in range(5):  # (I - K H) P, H = e_5^T
                     for s in range(5):
                         Pn[r, s] = Pm[r, s] - K[r] * Pm[4, s]
-                Pm[:, :] = Pn
+                for r in range(5):
+                    for s in range(5):
+                        Pm[r, s] = Pn[r, s]
             for r in range(5):
                 for s in range(r + 1, 5):
                     h = 0.5 * (Pm[r, s] + Pm[s, r])
                     Pm[r, s] = h
                     Pm[s, r] = h
-            cs[m, step + 1] = xm[:3]
+            for r in range(3):
+                cs[m, step + 1, r] = xm[r]
             # roll/pitch variances: diag(J P_cc J^T), J = d(phi, theta)/dc (generated)
             J = jit.euler_jacobian_third_row(xm[0], xm[1], xm[2])
             for r in range(2):

@@ -10,6 +10,13 @@ reference; tests compare the two to 1e-9), with the generated formulas of :mod:`
         K = P_xz / S,  x = x^- + K (z - z^),  P = P^- - K S K^T,  symmetrised
     EKF:  F = I + dt J(x),  x^- = RK4(x),  P^- = F P F^T + Q,  Joseph-form update
 
+The UKF integrates 5 of its 9 sigma points in full: the 4 points of the lower Cholesky
+factor's V_d and h columns have the centre point's roll and pitch, and the model's roll,
+pitch and V_d rates depend on roll and pitch only (dh/dt = -V_d), so they take the centre
+point's RK4 stages (the same numbers, bit for bit; a test checks it against all 9 in full).
+No kernel assigns slices (each such assignment compiles numba's generic broadcasting code:
+~6 of the ~17 CPU-s the kernels took to compile) or allocates inside its loops.
+
 A run whose covariance cannot be factored (Cholesky) is flagged; the caller then reruns the
 block with the numpy code, which raises :class:`ukf.NotPositiveDefiniteError` naming it.
 """
@@ -104,9 +111,34 @@ def _symmetrize(P):
 
 
 @jit.njit
+def _rk4_shared(x2, x3, dt, k12, k22, k32, k42):
+    """V_d and h after the RK4 step of :func:`_rk4` for a state whose roll and pitch (bit for
+    bit) are those of a point already propagated: d[phi, theta, V_d]/dt depend on roll and
+    pitch only and dh/dt = -V_d (euler_model_rhs; tests check it), so the stages' roll,
+    pitch and V_d rates ``k12``..``k42`` are that point's and only the h rates are this
+    state's. The same operations as :func:`_rk4`, in the same order."""
+    h = 0.5 * dt
+    c = dt / 6.0
+    out2 = x2 + c * (k12 + 2 * k22 + 2 * k32 + k42)
+    out3 = x3 + c * (-x2 + 2 * -(x2 + h * k12) + 2 * -(x2 + h * k22) + -(x2 + dt * k32))
+    return out2, out3
+
+
+@jit.njit
+def _same_bits(a, b):
+    """a and b are the same float (sign of zero included)."""
+    return a == b and math.copysign(1.0, a) == math.copysign(1.0, b)
+
+
+@jit.kernel
 def ukf_runs(gyro, accel, alt, x0, P0, wm, wc, scale, dt, g, gyro_var, accel_var, R, q_floor):
     """The UKF over runs (N, T): (states (N, T+1, 4), roll/pitch variances (N, T+1, 2),
-    failed (N,) bool: a covariance that Cholesky could not factor)."""
+    failed (N,) bool: a covariance that Cholesky could not factor).
+
+    The sigma points whose roll and pitch are the centre point's (those of the V_d and h
+    columns of the lower Cholesky factor, whose roll and pitch entries are 0) share its RK4
+    stages (:func:`_rk4_shared`): 5 of the 9 points are integrated in full, the same numbers
+    as integrating all 9."""
     N, T = gyro.shape[0], gyro.shape[1]
     n, S = 4, 9
     xs = np.empty((N, T + 1, 4))
@@ -119,18 +151,53 @@ def ukf_runs(gyro, accel, alt, x0, P0, wm, wc, scale, dt, g, gyro_var, accel_var
     x = np.empty(n)
     P = np.empty((n, n))
     dz = np.empty(S)
+    K = np.empty(n)
+    h = 0.5 * dt
     for i in range(N):
-        x[:] = x0[i]
-        P[:, :] = P0[i]
-        xs[i, 0] = x
+        for a in range(n):
+            x[a] = x0[i, a]
+            xs[i, 0, a] = x[a]
+            for b in range(n):
+                P[a, b] = P0[i, a, b]
         var[i, 0, 0], var[i, 0, 1] = P[0, 0], P[1, 1]
         for k in range(T):
+            w0, w1, w2 = gyro[i, k, 0], gyro[i, k, 1], gyro[i, k, 2]
+            f0, f1, f2 = accel[i, k, 0], accel[i, k, 1], accel[i, k, 2]
             _process_noise(x, dt, gyro_var, accel_var, q_floor, Q)
             if not _sigma_points(x, P, scale, L, X):
                 failed[i] = True
                 break
-            for j in range(S):
-                _rk4(X[j], dt, gyro[i, k], accel[i, k], g, Xf[j])
+            # the centre point, keeping its stages' rates for the points that share them
+            p0, p1, p2, p3 = X[0, 0], X[0, 1], X[0, 2], X[0, 3]
+            k1 = jit.euler_model_rhs(p0, p1, p2, p3, w0, w1, w2, f0, f1, f2, g)
+            k2 = jit.euler_model_rhs(
+                p0 + h * k1[0], p1 + h * k1[1], p2 + h * k1[2], p3 + h * k1[3],
+                w0, w1, w2, f0, f1, f2, g,
+            )  # fmt: skip
+            k3 = jit.euler_model_rhs(
+                p0 + h * k2[0], p1 + h * k2[1], p2 + h * k2[2], p3 + h * k2[3],
+                w0, w1, w2, f0, f1, f2, g,
+            )  # fmt: skip
+            k4 = jit.euler_model_rhs(
+                p0 + dt * k3[0], p1 + dt * k3[1], p2 + dt * k3[2], p3 + dt * k3[3],
+                w0, w1, w2, f0, f1, f2, g,
+            )  # fmt: skip
+            c6 = dt / 6.0
+            f_0 = p0 + c6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+            f_1 = p1 + c6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+            Xf[0, 0] = f_0
+            Xf[0, 1] = f_1
+            Xf[0, 2] = p2 + c6 * (k1[2] + 2 * k2[2] + 2 * k3[2] + k4[2])
+            Xf[0, 3] = p3 + c6 * (k1[3] + 2 * k2[3] + 2 * k3[3] + k4[3])
+            for j in range(1, S):
+                if _same_bits(X[j, 0], p0) and _same_bits(X[j, 1], p1):
+                    Xf[j, 0] = f_0
+                    Xf[j, 1] = f_1
+                    Xf[j, 2], Xf[j, 3] = _rk4_shared(
+                        X[j, 2], X[j, 3], dt, k1[2], k2[2], k3[2], k4[2]
+                    )
+                else:
+                    _rk4_point(X, j, dt, w0, w1, w2, f0, f1, f2, g, Xf)
             for a in range(n):  # x^- = Wm X_f
                 s = 0.0
                 for j in range(S):
@@ -158,7 +225,6 @@ def ukf_runs(gyro, accel, alt, x0, P0, wm, wc, scale, dt, g, gyro_var, accel_var
                 s_zz += R
                 s_inv = 1.0 / s_zz
                 y = z - zp
-                K = np.empty(n)
                 for a in range(n):
                     pxz = 0.0
                     for j in range(S):
@@ -170,12 +236,38 @@ def ukf_runs(gyro, accel, alt, x0, P0, wm, wc, scale, dt, g, gyro_var, accel_var
                     for b in range(n):
                         P[a, b] = P[a, b] - K[a] * (s_zz * K[b])
                 _symmetrize(P)
-            xs[i, k + 1] = x
+            for a in range(n):
+                xs[i, k + 1, a] = x[a]
             var[i, k + 1, 0], var[i, k + 1, 1] = P[0, 0], P[1, 1]
     return xs, var, failed
 
 
 @jit.njit
+def _rk4_point(X, j, dt, w0, w1, w2, f0, f1, f2, g, Xf):
+    """:func:`_rk4` of sigma point ``X[j]`` into ``Xf[j]`` (the inputs as scalars)."""
+    x0, x1, x2, x3 = X[j, 0], X[j, 1], X[j, 2], X[j, 3]
+    k1 = jit.euler_model_rhs(x0, x1, x2, x3, w0, w1, w2, f0, f1, f2, g)
+    h = 0.5 * dt
+    k2 = jit.euler_model_rhs(
+        x0 + h * k1[0], x1 + h * k1[1], x2 + h * k1[2], x3 + h * k1[3],
+        w0, w1, w2, f0, f1, f2, g,
+    )  # fmt: skip
+    k3 = jit.euler_model_rhs(
+        x0 + h * k2[0], x1 + h * k2[1], x2 + h * k2[2], x3 + h * k2[3],
+        w0, w1, w2, f0, f1, f2, g,
+    )  # fmt: skip
+    k4 = jit.euler_model_rhs(
+        x0 + dt * k3[0], x1 + dt * k3[1], x2 + dt * k3[2], x3 + dt * k3[3],
+        w0, w1, w2, f0, f1, f2, g,
+    )  # fmt: skip
+    c = dt / 6.0
+    Xf[j, 0] = x0 + c * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+    Xf[j, 1] = x1 + c * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+    Xf[j, 2] = x2 + c * (k1[2] + 2 * k2[2] + 2 * k3[2] + k4[2])
+    Xf[j, 3] = x3 + c * (k1[3] + 2 * k2[3] + 2 * k3[3] + k4[3])
+
+
+@jit.kernel
 def ekf_runs(gyro, accel, alt, x0, P0, dt, g, gyro_var, accel_var, R, q_floor):
     """The EKF over runs (N, T): (states (N, T+1, 4), roll/pitch variances (N, T+1, 2))."""
     N, T = gyro.shape[0], gyro.shape[1]
@@ -191,9 +283,11 @@ def ekf_runs(gyro, accel, alt, x0, P0, dt, g, gyro_var, accel_var, R, q_floor):
     P = np.empty((n, n))
     K = np.empty(n)
     for i in range(N):
-        x[:] = x0[i]
-        P[:, :] = P0[i]
-        xs[i, 0] = x
+        for a in range(n):
+            x[a] = x0[i, a]
+            xs[i, 0, a] = x[a]
+            for b in range(n):
+                P[a, b] = P0[i, a, b]
         var[i, 0, 0], var[i, 0, 1] = P[0, 0], P[1, 1]
         for k in range(T):
             w, f = gyro[i, k], accel[i, k]
@@ -203,7 +297,8 @@ def ekf_runs(gyro, accel, alt, x0, P0, dt, g, gyro_var, accel_var, R, q_floor):
                 for b in range(n):
                     F[a, b] = (1.0 if a == b else 0.0) + dt * J[4 * a + b]
             _rk4(x, dt, w, f, g, xn)
-            x[:] = xn
+            for a in range(n):
+                x[a] = xn[a]
             for a in range(n):  # P = F P F^T + Q
                 for b in range(n):
                     s = 0.0
@@ -216,7 +311,9 @@ def ekf_runs(gyro, accel, alt, x0, P0, dt, g, gyro_var, accel_var, R, q_floor):
                     for c in range(n):
                         s += FP[a, c] * F[b, c]
                     M[a, b] = s + Q[a, b]
-            P[:, :] = M
+            for a in range(n):
+                for b in range(n):
+                    P[a, b] = M[a, b]
             z = alt[i, k + 1]
             if not math.isnan(z):
                 S = P[3, 3] + R
@@ -232,8 +329,11 @@ def ekf_runs(gyro, accel, alt, x0, P0, dt, g, gyro_var, accel_var, R, q_floor):
                 for a in range(n):
                     for b in range(n):
                         M[a, b] = FP[a, b] - FP[a, 3] * K[b] + R * K[a] * K[b]
-                P[:, :] = M
+                for a in range(n):
+                    for b in range(n):
+                        P[a, b] = M[a, b]
             _symmetrize(P)
-            xs[i, k + 1] = x
+            for a in range(n):
+                xs[i, k + 1, a] = x[a]
             var[i, k + 1, 0], var[i, k + 1, 1] = P[0, 0], P[1, 1]
     return xs, var

@@ -51,7 +51,7 @@ BLOCK_RUNS = 256
 _SQUARES = ("er2", "ep2", "rs2", "ps2", "nees_r", "nees_p", "c1", "c2", "c3", "n2")
 
 
-@jit.njit
+@jit.kernel
 def _accumulate(
     roll, pitch, rs, ps, c, ne, t_roll, t_pitch, t_c, firsts, far, block, run_ms, flags, any_sigma
 ):

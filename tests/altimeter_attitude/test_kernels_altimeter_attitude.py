@@ -124,3 +124,76 @@ def test_numba_cache_is_outside_the_source_tree():
     assert not str(cache).startswith(str(ROOT / "pipeline"))
     assert not list((ROOT / "pipeline").rglob("*.nbi"))
     assert not list((ROOT / "pipeline").rglob("*.nbc"))
+
+
+def test_euler_model_rhs_structure_the_ukf_kernel_shares():
+    """kernels_euler.ukf_runs integrates the sigma points whose roll and pitch are the centre
+    point's with the centre point's stages: it rests on d[phi, theta, V_d]/dt not depending on
+    V_d and h, and dh/dt = -V_d, bit for bit (here on the compiled generated formula)."""
+    rng = np.random.default_rng(11)
+    for _ in range(200):
+        phi, theta = rng.uniform(-1.5, 1.5, 2)
+        rest = [float(v) for v in rng.normal(0.0, 3.0, 6)] + [9.80665]
+        ref = jit.euler_model_rhs(phi, theta, 0.0, 0.0, *rest)
+        for v_d, h in rng.normal(0.0, 100.0, (5, 2)):
+            out = jit.euler_model_rhs(phi, theta, v_d, h, *rest)
+            assert out[:3] == ref[:3]
+            assert out[3] == -v_d
+
+
+def test_ukf_kernel_shared_stages_equal_full_integration(short):
+    """The UKF kernel (5 of 9 sigma points integrated in full) gives the very numbers of the
+    same kernel integrating every point (compiled again with the sharing test disabled)."""
+    import numba
+
+    from pipeline.altimeter_attitude import kernels_euler
+
+    sc, inp = short
+    want = euler_filters.run_ukf(inp, sc.ukf_alpha, sc.ukf_beta, sc.ukf_kappa)
+    saved = kernels_euler._same_bits
+    try:  # numba freezes the globals a function sees when it compiles it (no cache here)
+        kernels_euler._same_bits = numba.njit(lambda a, b: False)
+        full = numba.njit(error_model="numpy")(kernels_euler.ukf_runs.dispatcher.py_func)
+        weights = euler_filters.ukf.MerweWeights(
+            n=4, alpha=sc.ukf_alpha, beta=sc.ukf_beta, kappa=sc.ukf_kappa
+        )
+        x, P = euler_filters._initial(inp)
+        sens = inp.sensors
+        xs, var, failed = full(
+            *euler_filters._kernel_inputs(inp), x, P, np.array(weights.Wm),
+            np.array(weights.Wc), weights.scale, inp.dt, inp.g, sens.gyro_sigma**2,
+            sens.accel_sigma**2, sens.altimeter_sigma**2, euler_filters.Q_FLOOR,
+        )  # fmt: skip
+    finally:
+        kernels_euler._same_bits = saved
+    assert not failed.any()
+    np.testing.assert_array_equal(xs[..., 0], want.roll)
+    np.testing.assert_array_equal(xs[..., 1], want.pitch)
+    np.testing.assert_array_equal(np.sqrt(var[..., 0]), want.roll_sigma)
+    np.testing.assert_array_equal(np.sqrt(var[..., 1]), want.pitch_sigma)
+
+
+def _plus_one(a):
+    return a + 1.0
+
+
+def test_kernel_first_call_holds_the_compile_lock(tmp_path, monkeypatch):
+    """jit.kernel: the first call in a process takes the cache directory's lock (another
+    process holding it makes the call wait), later calls do not."""
+    import fcntl
+    import os
+    import threading
+
+    calls = []
+    disp = jit.kernel(_plus_one)
+    monkeypatch.setattr(jit, "jit_lock_path", lambda: tmp_path / "compile.lock")
+    fd = os.open(tmp_path / "compile.lock", os.O_RDWR | os.O_CREAT)
+    fcntl.flock(fd, fcntl.LOCK_EX)
+    worker = threading.Thread(target=lambda: calls.append(disp(1.0)))
+    worker.start()
+    worker.join(0.5)
+    assert worker.is_alive() and not calls  # waits for the lock
+    os.close(fd)
+    worker.join(60)
+    assert calls == [2.0]
+    assert disp.dispatcher.signatures and disp(2.0) == 3.0
