@@ -29,6 +29,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.altimeter_attitude import jit
+from pipeline.altimeter_attitude.chunk_plan import BLOCK_RUNS
 from pipeline.altimeter_attitude.columns import (
     RMS_SUMMARY_COLUMNS,
     RUN_RMS_COLUMNS,
@@ -44,9 +45,6 @@ from pipeline.altimeter_attitude.windows import Window
 
 __all__ = ["BLOCK_RUNS", "BlockSums", "FilterSums", "MonteCarloSums", "block_sums"]
 
-#: runs per block: the histories of one block (~150 MB per filter at 10,000 steps) are all
-#: that is held; fixed, so the results do not depend on the machine
-BLOCK_RUNS = 256
 
 _SQUARES = ("er2", "ep2", "rs2", "ps2", "nees_r", "nees_p", "c1", "c2", "c3", "n2")
 

@@ -93,7 +93,7 @@ def _figure_outputs(ctx: Context) -> dict[str, list[str]]:
 def _chunks(ctx: Context) -> dict[str, object]:
     """A scenario's chunk files (monte_carlo.chunk_runs), the inputs of its merge; none for a
     Monte Carlo run in one job."""
-    from pipeline.altimeter_attitude.chunks import chunk_bounds
+    from pipeline.altimeter_attitude.chunk_plan import chunk_bounds
 
     def files(wildcards) -> list[str]:
         sc = load_scenario(ctx.scenario_file(wildcards.scenario))
@@ -104,8 +104,8 @@ def _chunks(ctx: Context) -> dict[str, object]:
 
 
 def _chunk_resources(ctx: Context) -> dict[str, object]:
-    """A chunk job's memory and run time, from its scenario's size (chunks.chunk_request)."""
-    from pipeline.altimeter_attitude.chunks import chunk_request
+    """A chunk job's memory and run time, from its scenario's size (chunk_plan.chunk_request)."""
+    from pipeline.altimeter_attitude.chunk_plan import chunk_request
 
     def pick(name: str):
         return lambda wc: getattr(
