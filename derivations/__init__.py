@@ -11,7 +11,15 @@ so every process that derives (the derive, audit and codegen steps, the notebook
 makes the same choices.
 """
 
-import sympy.core.random as _sympy_random
+import os
+
+# SymPy's cache (an LRU of its core operations) holds 1,000 entries unless SYMPY_CACHE_SIZE says
+# otherwise, read when SymPy is first imported (the workflow's scripts import this package
+# first). The derivations and the audit's simplifications evict entries they reuse at that size;
+# at 50,000 the north-finding audit took about 12 % less CPU time, with the same outputs.
+os.environ.setdefault("SYMPY_CACHE_SIZE", "50000")
+
+import sympy.core.random as _sympy_random  # noqa: E402
 
 #: seed of SymPy's random generator in every process that imports ``derivations``
 SYMPY_SEED = 0
