@@ -24,3 +24,9 @@ import sympy.core.random as _sympy_random  # noqa: E402
 #: seed of SymPy's random generator in every process that imports ``derivations``
 SYMPY_SEED = 0
 _sympy_random.seed(SYMPY_SEED)
+
+# A snapshot of derivations another process computed (the workflow's derive step, for the
+# paper's notebook), named by INERTIAL_REPRO_DERIVATION_MEMO: see derivations.memo.
+from derivations import memo as _memo  # noqa: E402
+
+_memo.preload_env()

@@ -24,12 +24,11 @@ Matrix([[-sin(theta), sin(phi)*cos(theta), cos(phi)*cos(theta)]])
 
 from __future__ import annotations
 
-import functools
-
 import sympy as sp
 
 from derivations.altimeter_attitude import symbols as s
 from derivations.frames import angular_velocity_from_dcm, mat_ne, mat_tn, rot_z, skew
+from derivations.memo import derivation
 
 __all__ = [
     "mat_nb",
@@ -98,7 +97,7 @@ def body_rate_from_euler() -> sp.Matrix:
     return sp.Matrix(_body_rate_from_euler())
 
 
-@functools.lru_cache(maxsize=1)
+@derivation
 def _body_rate_from_euler() -> sp.ImmutableMatrix:
     ph, th, ps = euler_functions()
     w = angular_velocity_from_dcm(mat_tn(ps, th, ph), s.t)
@@ -120,7 +119,7 @@ def euler_rates() -> sp.Matrix:
     return sp.Matrix(_euler_rates())
 
 
-@functools.lru_cache(maxsize=1)
+@derivation
 def _euler_rates() -> sp.ImmutableMatrix:
     w = body_rate_from_euler()
     sol = sp.solve(list(w - s.omega), [phi_dot, theta_dot, psi_dot], dict=True)[0]

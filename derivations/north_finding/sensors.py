@@ -28,8 +28,6 @@ S f_i + MA_ij f_j + MA_ik f_k + b + n.
 
 from __future__ import annotations
 
-import functools
-
 import sympy as sp
 
 from derivations import frames
@@ -99,7 +97,7 @@ def earth_rate_b(tau_: sp.Expr = tau) -> sp.Matrix:
     return mat_bn(tau_) * frames.earth_rate_n(Omega, lam)
 
 
-@functools.cache
+@derivation
 def _table_kinematics() -> tuple[sp.Matrix, sp.Matrix]:
     """Velocity and acceleration of the sensor relative to T, expressed in B.
 

@@ -17,11 +17,10 @@ definitions 13-14 and spherical mass gravity ``g = -GM r / |r|^3``:
 
 from __future__ import annotations
 
-import functools
-
 import sympy as sp
 
 from derivations import frames
+from derivations.memo import derivation
 from derivations.platform_drift import kinematics as kin
 from derivations.platform_drift import symbols as s
 from derivations.platform_drift.approx import derivative_symbols, taylor
@@ -66,7 +65,7 @@ def gravity_s() -> sp.Matrix:
     return -s.GM * r_vec / (s.x**2 + s.y**2 + s.z**2) ** sp.Rational(3, 2)
 
 
-@functools.cache
+@derivation
 def oscillation_equations(commands: bool = True) -> dict[str, sp.Expr]:
     """Eq. 15: rates of omega_y, omega_x, phi_y, phi_x.
 
@@ -105,7 +104,7 @@ def oscillation_equations(commands: bool = True) -> dict[str, sp.Expr]:
     return out
 
 
-@functools.cache
+@derivation
 def level_commands() -> dict[str, sp.Expr]:
     """Eq. 12 derived: p_dot, q_dot that keep a level platform level.
 
@@ -160,7 +159,7 @@ def position_equation() -> tuple[sp.Matrix, sp.Matrix]:
     return kin.transport_rate_mN(), sp.expand(rhs)
 
 
-@functools.cache
+@derivation
 def position_rates() -> dict[str, sp.Expr]:
     """Explicit form of eq. 16: lon_dot, lat_dot, psi_dot (singular at the poles)."""
     lhs, rhs = position_equation()
@@ -168,7 +167,7 @@ def position_rates() -> dict[str, sp.Expr]:
     return {str(k): sp.simplify(v) for k, v in sol.items()}
 
 
-@functools.cache
+@derivation
 def tilt_kinematics_exact_stationary() -> dict[str, sp.Expr]:
     """Exact rates of phi_x, phi_y, psi of the platform s for a vehicle at rest (behind eq. 19).
 
@@ -188,7 +187,7 @@ def tilt_kinematics_exact_stationary() -> dict[str, sp.Expr]:
     return {str(k): sol[i] for i, k in enumerate(unknowns)}
 
 
-@functools.cache
+@derivation
 def tilt_kinematics_stationary() -> dict[str, sp.Expr]:
     """Eq. 19: the exact stationary kinematics to first order in the tilts."""
     ex = tilt_kinematics_exact_stationary()

@@ -19,10 +19,9 @@
 
 from __future__ import annotations
 
-import functools
-
 import sympy as sp
 
+from derivations.memo import derivation
 from derivations.platform_drift import algorithm as alg
 from derivations.platform_drift import specific_force as sf
 from derivations.platform_drift import symbols as s
@@ -47,7 +46,7 @@ TO_ALPHA = {
 }
 
 
-@functools.cache
+@derivation
 def tilts_0m_exact() -> dict[str, sp.Expr]:
     """Eq. 20: phi_y(0-), phi_x(0-) from eq. 18 with f1 = b_a1, f2 = b_a2."""
     f = sf.specific_force_stationary()
@@ -57,7 +56,7 @@ def tilts_0m_exact() -> dict[str, sp.Expr]:
     }
 
 
-@functools.cache
+@derivation
 def tilts_0m() -> dict[str, sp.Expr]:
     """Eq. 21: eq. 20 to first order in R omega_e^2 and the biases, in alpha and theta_F."""
     X = sp.Symbol("X", positive=True)  # R omega_e^2
@@ -95,7 +94,7 @@ def r_0m() -> sp.Expr:
     return sp.expand(s.omega_e * sp.sin(s.lat) - disturbance_dr_0m(first_order=True))
 
 
-@functools.cache
+@derivation
 def rates_0m_exact() -> dict[str, sp.Expr]:
     """p(0-), q(0-), r(0-) exactly: the exact stationary kinematics (behind eq. 19) with
     phi_x_dot = phi_y_dot = psi_dot = 0 (eqs. 20, 22: alignment holds the platform still),

@@ -17,10 +17,9 @@
 
 from __future__ import annotations
 
-import functools
-
 import sympy as sp
 
+from derivations.memo import derivation
 from derivations.platform_drift import algorithm as alg
 from derivations.platform_drift import alignment as al
 from derivations.platform_drift import symbols as s
@@ -53,7 +52,7 @@ def nav_command_rates() -> dict[str, sp.Expr]:
     }
 
 
-@functools.cache
+@derivation
 def tilt_error_equations() -> dict[str, sp.Expr]:
     """Eq. 28 derived: phi_x_ddot, phi_y_ddot (first order in the tilts).
 
@@ -124,7 +123,7 @@ def oscillation_period() -> sp.Expr:
     return sp.simplify(2 * sp.pi / freqs.pop())
 
 
-@functools.cache
+@derivation
 def initial_conditions_ideal() -> dict[str, sp.Expr]:
     """Eqs. 30-31 / 34 for an ideal IMU: phi(0), phi_dot(0+) to first order in alpha.
 
@@ -143,7 +142,7 @@ def initial_conditions_ideal() -> dict[str, sp.Expr]:
     return {k: sp.expand(sp.trigsimp(v.subs(s.psi, s.psi0))) for k, v in out.items()}
 
 
-@functools.cache
+@derivation
 def channel1() -> dict[str, sp.Expr]:
     """Eqs. 29-32: constant drift b_g1 of the first level gyro, vehicle at rest, ideal IMU.
 
@@ -190,7 +189,7 @@ def platform_azimuth_stationary() -> sp.Expr:
     return sp.expand(sol.rhs)
 
 
-@functools.cache
+@derivation
 def channel3_forcing() -> dict[str, sp.Expr]:
     """Forcing of eq. 33/35: -b_g3 omega_y and b_g3 omega_x along psi(t), first order in b_g3.
 
@@ -213,7 +212,7 @@ TO_AW = {s.omega_e * sp.sin(s.lat): s.W, s.b_g3 * s.omega_e * sp.cos(s.lat): s.A
 FROM_AW = {s.W: s.omega_e * sp.sin(s.lat), s.Amp: s.b_g3 * s.omega_e * sp.cos(s.lat)}
 
 
-@functools.cache
+@derivation
 def channel3_aw() -> dict[str, sp.Expr]:
     """Eqs. 33-36 in eq. 35's shorthand A, W (see :func:`channel3`)."""
     forcing = channel3_forcing()

@@ -28,6 +28,7 @@ import functools
 import sympy as sp
 
 from derivations import frames
+from derivations.memo import derivation
 from derivations.platform_drift import symbols as s
 from derivations.platform_drift.approx import derivative_symbols, taylor
 
@@ -135,7 +136,7 @@ def velocity_at_rest_mN(
     return earth_rate_mN(omega_e, lat).cross(sp.Matrix([0, 0, R]))
 
 
-@functools.cache
+@derivation
 def transport_rate_mN() -> sp.Matrix:
     """``^{mN} omega_{e mN}`` (eq. 4) from Poisson's equation on ``NWU mat_ne(lat(t), lon(t))``."""
     la, lo = sp.Function("phi_i")(s.t), sp.Function("lambda")(s.t)
@@ -143,7 +144,7 @@ def transport_rate_mN() -> sp.Matrix:
     return sp.simplify(derivative_symbols(w, {la: (s.lat, s.lat_dot), lo: (s.lon, s.lon_dot)}))
 
 
-@functools.cache
+@derivation
 def azimuth_rate_mi() -> sp.Matrix:
     """``^{mi} omega_{mN mi}`` (eq. 4): rate of m_i relative to m_N, [0, 0, psi_dot]."""
     ps = sp.Function("psi")(s.t)
@@ -151,7 +152,7 @@ def azimuth_rate_mi() -> sp.Matrix:
     return derivative_symbols(w, {ps: (s.psi, s.psi_dot)})
 
 
-@functools.cache
+@derivation
 def coriolis_theorem() -> dict[str, sp.Matrix]:
     """Transport theorem (eq. 8) on a concrete motion, for the audit.
 

@@ -19,11 +19,10 @@ impulse k_x DeltaV_x delta(t) of the acceleration error, i.e. an initial velocit
 
 from __future__ import annotations
 
-import functools
-
 import sympy as sp
 
 from derivations import frames
+from derivations.memo import derivation
 from derivations.platform_drift import symbols as s
 
 __all__ = ["error_model", "position_errors", "ENTRIES", "table2", "schuler_period"]
@@ -56,7 +55,7 @@ def error_model() -> dict[str, sp.Matrix]:
     return {"phi": phi, "dv": dv, "delta_a": delta_a, "phi_dot": phi_dot}
 
 
-@functools.cache
+@derivation
 def position_errors() -> dict[str, sp.Expr]:
     """delta_x(t) and delta_y(t) with every error source of Table 2 at once (linear model)."""
     m = error_model()
@@ -94,7 +93,7 @@ def _only(expr: sp.Expr, keep: tuple[sp.Symbol, ...]) -> sp.Expr:
     return sp.simplify(expr.subs(zero))
 
 
-@functools.cache
+@derivation
 def table2() -> dict[str, sp.Expr | tuple[sp.Expr, sp.Expr]]:
     """The position error of each Table 2 row, one error source at a time.
 

@@ -13,10 +13,9 @@ The vertical component of f divided by R is the Schuler-like constant k_sh of eq
 
 from __future__ import annotations
 
-import functools
-
 import sympy as sp
 
+from derivations.memo import derivation
 from derivations.platform_drift import kinematics as kin
 from derivations.platform_drift import symbols as s
 from derivations.platform_drift.approx import derivative_symbols, taylor
@@ -33,7 +32,7 @@ __all__ = [
 STATIONARY = {s.lat_dot: 0, s.lat_ddot: 0, s.lon_dot: 0, s.lon_ddot: 0}
 
 
-@functools.cache
+@derivation
 def specific_force_mN() -> sp.Matrix:
     """``^{mN} f`` of a vehicle on the sphere (N, W, U components)."""
     la, lo = sp.Function("phi_i")(s.t), sp.Function("lambda")(s.t)
@@ -53,7 +52,7 @@ def specific_force_s_exact() -> sp.Matrix:
     return kin.mat_s_mN() * specific_force_mN()
 
 
-@functools.cache
+@derivation
 def specific_force_s() -> sp.Matrix:
     """Eq. 17: ``^s f`` to first order in the tilts (rows f1, f2, f3)."""
     return taylor(specific_force_s_exact(), [s.phi_x, s.phi_y], 1)

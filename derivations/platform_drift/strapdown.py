@@ -23,13 +23,13 @@ which turns with the course of the truth path (``pipeline/platform_drift/traject
 
 from __future__ import annotations
 
-import functools
 from collections.abc import Mapping
 
 import sympy as sp
 
 from derivations import frames
 from derivations.codegen import GeneratedFunction
+from derivations.memo import derivation
 from derivations.platform_drift import kinematics as kin
 from derivations.platform_drift import symbols as s
 
@@ -46,7 +46,7 @@ dlat, dlon = sp.symbols("dlat dlon", real=True)
 SYMBOLS = {"f_n": f_n, "f_e": f_e, "f_d": f_d, "v_n": v_n, "v_e": v_e, "rho": rho}
 
 
-@functools.cache
+@derivation
 def velocity_rates_n() -> dict[str, sp.Expr]:
     """(v_N_dot, v_E_dot, v_D_dot) of the NED mechanisation on the sphere (eq. 10, t = e, s = n).
 

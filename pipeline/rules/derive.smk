@@ -1,6 +1,7 @@
 # Per paper ({paper} wildcard): the SymPy derivations, computed once and pickled (derive), then
 # checked against the printed equations (equation audit) and against the committed generated
-# code (codegen check), both from that one artefact; and the executed notebook.
+# code (codegen check), both from that one artefact; and the executed notebook, which preloads
+# the derivations derive computed on the way (derivation_memo.pkl, derivations/memo.py).
 
 
 rule derive:
@@ -8,6 +9,7 @@ rule derive:
         code=derive_code("derive"),
     output:
         kept(f"{RESULTS}/{{paper}}/derivation.pkl"),
+        memo=kept(f"{RESULTS}/{{paper}}/derivation_memo.pkl"),
     log:
         f"{RESULTS}/{{paper}}/logs/derive.log",
     benchmark:
@@ -96,6 +98,7 @@ rule notebook:
         notebook_code,
         code=code(script="execute_notebook.py"),
         notebook="notebooks/{paper}.ipynb",
+        memo=rules.derive.output.memo,
     output:
         report(
             kept(f"{REPORTS}/notebooks/{{paper}}.html"),

@@ -1,10 +1,16 @@
 # Snakemake script: execute a notebook and export it as one self-contained HTML page (mathematics
 # as MathML, figures as data URIs, no script or network resource, the same bytes every run; see
-# pipeline/notebook_html.py).
+# pipeline/notebook_html.py). The kernel preloads the derivations the paper's derive step
+# computed (derivations/memo.py): the same results, without deriving them again.
 
+import os
+
+from derivations.memo import ENV_VAR
 from pipeline.atomic import write_text
 from pipeline.notebook_html import build
 from pipeline.script_log import logged
 
 with logged(snakemake.log[0], written=snakemake.output):  # noqa: F821
+    # the kernel (inheriting this environment) preloads what the derive step computed
+    os.environ[ENV_VAR] = os.path.abspath(snakemake.input.memo)  # noqa: F821
     write_text(snakemake.output[0], build(snakemake.input.notebook))  # noqa: F821
