@@ -93,7 +93,8 @@ $(PROJECT_STAMP): $(STAMP) pyproject.toml
 
 # One `make reproduce` at a time per checkout (flock); inside it, a Snakemake lock left by a
 # killed run is stale and is released, and the outputs a killed run left incomplete are rerun.
-SNAKEMAKE_RUN := PYTHONPATH=$(CURDIR) $(VENV)/bin/snakemake
+# Snakemake with one fix to its scheduler loop (pipeline/run_snakemake.py: ~20 CPU-s of a full run)
+SNAKEMAKE_RUN := PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.run_snakemake
 
 # How `workflow` runs the jobs: here, on CORES cores; `make reproduce-slurm` passes the profile.
 WORKFLOW_ARGS ?= --cores $(CORES)

@@ -44,9 +44,10 @@ NEEDS_RUN = [] if have_results(ROOT) else [pytest.mark.slow, pytest.mark.workflo
 
 
 def snakemake(*args: str, cwd: Path, timeout: float = HANG_GUARD_S) -> subprocess.CompletedProcess:
-    """Run snakemake in its own session; on timeout kill the whole group (its jobs too)."""
+    """Run snakemake in its own session, as ``make reproduce`` runs it (pipeline.run_snakemake);
+    on timeout kill the whole group (its jobs too)."""
     env = {**os.environ, "PYTHONPATH": str(cwd)}
-    cmd = [sys.executable, "-m", "snakemake", *args]
+    cmd = [sys.executable, "-m", "pipeline.run_snakemake", *args]
     proc = subprocess.Popen(
         cmd,
         cwd=cwd,

@@ -1,0 +1,83 @@
+"""Issue 15: ``python -m pipeline.run_snakemake`` (what ``make reproduce`` runs) is Snakemake's
+command line with at most one pending scheduler wake-up timer."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import threading
+from pathlib import Path
+
+import snakemake
+from snakemake.scheduling.job_scheduler import JobScheduler
+
+from pipeline import run_snakemake
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def test_pinned_snakemake_is_the_patched_one() -> None:
+    """The lock's Snakemake is the version the fix was written for, and it still has the method
+    the fix replaces (an upgrade that renames it makes this fail, not the fix silently vanish)."""
+    assert snakemake.__version__ == run_snakemake.PATCHED_VERSION
+    subclass = type("Scheduler", (JobScheduler,), {})
+    assert run_snakemake.one_pending_reevaluation(subclass)
+    assert subclass._schedule_reevalutation is not JobScheduler._schedule_reevalutation
+
+
+def test_many_requests_one_timer() -> None:
+    """Ten requests while one timer is pending wake the loop once; a request after it fired sets
+    a new timer (the loop is never left without a wake-up)."""
+
+    class Loop:
+        def __init__(self) -> None:
+            self._open_jobs = threading.Semaphore(0)
+
+        def _schedule_reevalutation(self, delay: float) -> None:
+            raise AssertionError("not patched")
+
+    assert run_snakemake.one_pending_reevaluation(Loop)
+    loop = Loop()
+    for _ in range(10):
+        loop._schedule_reevalutation(0.05)
+    assert loop._open_jobs.acquire(timeout=10)
+    assert not loop._open_jobs.acquire(timeout=0.3)
+    loop._schedule_reevalutation(0.05)
+    assert loop._open_jobs.acquire(timeout=10)
+
+
+def test_no_method_no_patch() -> None:
+    assert not run_snakemake.one_pending_reevaluation(type("Other", (), {}))
+
+
+def _run(workdir: Path, *args: str) -> subprocess.CompletedProcess:
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    return subprocess.run(
+        [sys.executable, "-m", "pipeline.run_snakemake", "--cores", "2", *args],
+        cwd=workdir,
+        env=env,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+
+
+def test_runs_a_workflow_and_reports_failure(tmp_path: Path) -> None:
+    """Jobs that wait for cores (the timer's case) all run; a failing job gives exit status 1."""
+    (tmp_path / "Snakefile").write_text(
+        "rule all:\n"
+        "    input: expand('out/{i}.txt', i=range(5))\n"
+        "rule one:\n"
+        "    output: 'out/{i}.txt'\n"
+        "    shell: 'sleep 0.2; echo {wildcards.i} > {output}'\n"
+    )
+    done = _run(tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert [(tmp_path / f"out/{i}.txt").read_text() for i in range(5)] == [
+        f"{i}\n" for i in range(5)
+    ]
+    (tmp_path / "Snakefile").write_text("rule bad:\n    output: 'bad.txt'\n    shell: 'exit 3'\n")
+    failed = _run(tmp_path)
+    assert failed.returncode == 1
+    assert "Error in rule bad" in failed.stderr
