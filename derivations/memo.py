@@ -42,13 +42,25 @@ from __future__ import annotations
 import functools
 import os
 import pickle
+import types
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, TypeVar
 
 import sympy as sp
 
-__all__ = ["ENV_VAR", "derivation", "dumps", "fresh_copy", "preload", "preload_env", "snapshot"]
+__all__ = [
+    "ENV_VAR",
+    "derivation",
+    "dumps",
+    "freeze",
+    "fresh_copy",
+    "preload",
+    "preload_env",
+    "snapshot",
+    "thaw",
+]
 
 #: names the pickled snapshot a process preloads when it imports :mod:`derivations`
 ENV_VAR = "INERTIAL_REPRO_DERIVATION_MEMO"
@@ -73,8 +85,63 @@ def fresh_copy(value: Any) -> Any:
     return value
 
 
+@dataclass(frozen=True)
+class _Frozen:
+    """A hashable stand-in for an unhashable argument (a mutable matrix, a list) or for an object
+    compared by identity (a plain class instance): its kind and its contents, frozen."""
+
+    kind: Any  # "matrix", "list", or the object's class
+    contents: Any  # an ImmutableMatrix, a tuple, or ((attribute, frozen value), ...)
+
+
+def freeze(value: Any) -> Any:
+    """``value`` as a key: hashable values as they are; a mutable matrix, a list, or an instance
+    of a class without its own equality (compared by identity, so never equal to the same
+    object rebuilt in another process) by their contents. :func:`thaw` rebuilds an equal value.
+
+    >>> x = sp.Symbol("x")
+    >>> key = freeze([sp.Matrix([x, 1]), 2])
+    >>> key == freeze([sp.Matrix([x, 1]), 2]), hash(key) == hash(freeze([sp.Matrix([x, 1]), 2]))
+    (True, True)
+    >>> thaw(key)
+    [Matrix([
+    [x],
+    [1]]), 2]
+    """
+    if isinstance(value, sp.MatrixBase) and not isinstance(value, sp.ImmutableMatrix):
+        return _Frozen("matrix", sp.ImmutableMatrix(value))
+    if isinstance(value, list):
+        return _Frozen("list", tuple(freeze(v) for v in value))
+    if isinstance(value, tuple):
+        return tuple(freeze(v) for v in value)
+    if (
+        type(value).__eq__ is object.__eq__
+        and hasattr(value, "__dict__")
+        and not callable(value)  # functions and classes are keys as they are
+        and not isinstance(value, types.ModuleType)
+    ):
+        state = tuple(sorted((k, freeze(v)) for k, v in vars(value).items()))
+        return _Frozen(type(value), state)
+    return value
+
+
+def thaw(key: Any) -> Any:
+    """The value :func:`freeze` made ``key`` of (an equal one, of the same type)."""
+    if isinstance(key, tuple):
+        return tuple(thaw(v) for v in key)
+    if not isinstance(key, _Frozen):
+        return key
+    if key.kind == "matrix":
+        return sp.Matrix(key.contents)
+    if key.kind == "list":
+        return [thaw(v) for v in key.contents]
+    obj = key.kind.__new__(key.kind)
+    obj.__dict__.update({k: thaw(v) for k, v in key.contents})
+    return obj
+
+
 def _key(args: tuple, kwargs: dict) -> Any:
-    return (args, tuple(sorted(kwargs.items())))
+    return (freeze(args), tuple(sorted((k, freeze(v)) for k, v in kwargs.items())))
 
 
 def derivation(func: F) -> F:

@@ -33,6 +33,7 @@ from derivations.altimeter_attitude.kinematics import (
 )
 from derivations.altimeter_attitude.leveling import navigation_symbols, velocity_rate
 from derivations.frames import skew
+from derivations.memo import derivation
 
 __all__ = [
     "vertical_velocity_rate",
@@ -92,6 +93,7 @@ def measurement_matrix() -> sp.Matrix:
     return sp.Matrix([s.h]).jacobian(s.x)
 
 
+@derivation
 def discretisation_series(order: int = 3) -> dict[str, sp.Matrix]:
     """eqs. 29-30 for A, B, C held over a step: truncated series of the exact ZOH model.
 

@@ -24,6 +24,8 @@ import itertools
 
 import sympy as sp
 
+from derivations.memo import derivation
+
 __all__ = [
     "Setting",
     "generic_setting",
@@ -128,6 +130,7 @@ def mean_identity(st: Setting) -> dict[str, sp.Matrix]:
     }
 
 
+@derivation
 def covariance_identity(n: int = 2, m: int = 2, setting: Setting | None = None) -> dict:
     """eq. 13a, proved by expectation of the expanded outer product.
 
@@ -162,6 +165,7 @@ def covariance_identity(n: int = 2, m: int = 2, setting: Setting | None = None) 
     }
 
 
+@derivation
 def kalman_update(P_pred: sp.Matrix, H: sp.Matrix, R: sp.Expr) -> dict[str, sp.Matrix]:
     """eq. 31, update: K = P_pred H^T (H P_pred H^T + R)^-1, P = (I - K H) P_pred.
 
@@ -177,6 +181,7 @@ def kalman_update(P_pred: sp.Matrix, H: sp.Matrix, R: sp.Expr) -> dict[str, sp.M
     return {"K": K, "P": sp.simplify((sp.eye(n) - K * H) * P_pred)}
 
 
+@derivation
 def paper_gamma_term() -> dict[str, sp.Matrix]:
     """Gamma (Q kron P) Gamma^T of the paper's model in closed form (used by the filter).
 

@@ -100,9 +100,17 @@ def timeseries_frame(est: Estimates, truth: Truth, every: int) -> pd.DataFrame:
 def nees_bounds(n_runs: int, n_times: int = 1, p: float = 0.95) -> tuple[float, float]:
     """Two-sided chi-square interval of a mean NEES of one angle over n_runs (x n_times)
     independent samples: chi2(p, dof = n) / n. For time averages the samples are correlated,
-    so the interval is computed with n = n_runs only (conservative)."""
-    from scipy.stats import chi2
+    so the interval is computed with n = n_runs only (conservative).
+
+    The quantiles are ``2 gammaincinv(n/2, q)``, which is what ``scipy.stats.chi2.ppf(q, n)``
+    computes (bit for bit), without importing ``scipy.stats`` (~0.8 CPU-s of the figures step).
+
+    >>> from scipy.stats import chi2
+    >>> nees_bounds(100) == tuple(float(v) / 100 for v in chi2.ppf([0.025, 0.975], 100))
+    True
+    """
+    from scipy.special import gammaincinv
 
     n = n_runs * n_times
-    lo, hi = chi2.ppf([(1 - p) / 2, (1 + p) / 2], n)
+    lo, hi = 2 * gammaincinv(n / 2, np.array([(1 - p) / 2, (1 + p) / 2]))
     return float(lo / n), float(hi / n)

@@ -502,3 +502,19 @@ def test_sweep_figure_step_writes_the_png_and_its_svg(tmp_path):
         png.read_bytes()
         == write_sweep(csv, tmp_path / "again" / "fig_sweep.png", PUBLISHED).read_bytes()
     )
+
+
+def test_nees_band_is_scipy_stats_chi2_bit_for_bit():
+    # nees_bounds computes chi2.ppf from scipy.special (the figures step does not import
+    # scipy.stats); the band drawn in Figs. 9 and 11 and the consistency verdicts are unchanged
+    import numpy as np
+    from scipy.stats import chi2
+
+    from pipeline.altimeter_attitude.metrics import nees_bounds
+
+    for p in (0.5, 0.9, 0.95, 0.99):
+        for n_runs, n_times in [(n, 1) for n in range(1, 400)] + [(100, 7), (3, 1000)]:
+            n = n_runs * n_times
+            expected = chi2.ppf([(1 - p) / 2, (1 + p) / 2], n) / n
+            got = np.array(nees_bounds(n_runs, n_times, p=p))
+            assert got.tobytes() == expected.tobytes(), (p, n_runs, n_times)

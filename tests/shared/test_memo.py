@@ -24,19 +24,43 @@ artefact.build(sys.argv[1], sys.argv[2])
 sys.stdout.buffer.write(memo.dumps(memo.snapshot()))
 """
 
-# In another fresh process: call every function of a snapshot with its arguments, without the
-# snapshot (the notebook's path when it runs alone), and write {function: [(key, srepr)]}.
-_FRESH = """
-import importlib, pickle, sys
+# The text a result is compared by: srepr of each SymPy object in it (assumptions included); a
+# plain object (the Setting a covariance_identity result carries) by its class and attributes.
+_TEXT = """
 import sympy as sp
+
+def text(value):
+    if isinstance(value, dict):
+        return "{" + ", ".join(f"{k!r}: {text(v)}" for k, v in value.items()) + "}"
+    if isinstance(value, (list, tuple)):
+        return type(value).__name__ + "(" + ", ".join(text(v) for v in value) + ")"
+    if isinstance(value, (sp.Basic, sp.MatrixBase)) or not hasattr(value, "__dict__"):
+        return sp.srepr(value)
+    return type(value).__qualname__ + text(dict(sorted(vars(value).items())))
+"""
+_namespace: dict = {}
+exec(_TEXT, _namespace)
+_text = _namespace["text"]
+
+# In another fresh process: call every function of a snapshot with its arguments, without the
+# snapshot (the notebook's path when it runs alone), and write {function: [(key, text)]}; an
+# argument keyed by its contents (a matrix, an object: memo.freeze) is rebuilt from the key.
+_FRESH = (
+    _TEXT
+    + """
+import importlib, pickle, sys
+from derivations.memo import thaw
 snap = pickle.loads(sys.stdin.buffer.read())
 out = {}
 for name, results in snap.items():
     module, _, qualname = name.rpartition(".")
     fn = getattr(importlib.import_module(module), qualname)
-    out[name] = [(repr(key), sp.srepr(fn(*key[0], **dict(key[1])))) for key in results]
+    out[name] = [
+        (repr(key), text(fn(*thaw(key[0]), **{k: thaw(v) for k, v in key[1]}))) for key in results
+    ]
 sys.stdout.buffer.write(pickle.dumps(out))
 """
+)
 
 
 def _run(script: str, *args: str, stdin: bytes = b"") -> bytes:
@@ -64,7 +88,7 @@ def test_the_derive_memo_is_what_a_fresh_process_derives(slug):
     fresh = pickle.loads(_run(_FRESH, stdin=raw))
     assert sorted(fresh) == sorted(snap)
     for name, results in snap.items():
-        mine = [(repr(key), sp.srepr(memo.fresh_copy(value))) for key, value in results.items()]
+        mine = [(repr(key), _text(memo.fresh_copy(value))) for key, value in results.items()]
         assert mine == fresh[name], name
 
 
@@ -114,3 +138,51 @@ def test_callers_get_their_own_copies():
     first["m"][0] = 0
     first["extra"] = 1
     assert table() == {"m": sp.Matrix([1, 2])}
+
+
+def _plain_function() -> None:
+    """A function as an argument: keyed as it is (by identity), never by its attributes."""
+
+
+class _Problem:
+    """An argument compared by identity, as the Setting of the multiplicative-noise proofs is."""
+
+    def __init__(self, m: sp.Matrix, sizes: list[int]) -> None:
+        self.m, self.sizes = m, sizes
+
+
+def test_matrix_and_object_arguments_are_keyed_by_their_contents():
+    calls = []
+
+    @memo.derivation
+    def trace_of(problem, extra):
+        calls.append(problem)
+        return problem.m.trace() + extra[0, 0]
+
+    x = sp.Symbol("x")
+    assert trace_of(_Problem(sp.Matrix([[x, 1], [2, 3]]), [2]), sp.Matrix([[1]])) == x + 4
+    # an equal object rebuilt (as in another process) and an equal matrix: the result, not a call
+    assert trace_of(_Problem(sp.Matrix([[x, 1], [2, 3]]), [2]), sp.Matrix([[1]])) == x + 4
+    assert len(calls) == 1
+    # a change of any attribute, or of the matrix argument, is another key
+    changed = _Problem(sp.Matrix([[x, 1], [2, 3]]), [2])
+    changed.m[1, 1] = 5
+    assert trace_of(changed, sp.Matrix([[1]])) == x + 6
+    assert trace_of(_Problem(sp.Matrix([[x, 1], [2, 3]]), [3]), sp.Matrix([[1]])) == x + 4
+    assert trace_of(_Problem(sp.Matrix([[x, 1], [2, 3]]), [2]), sp.Matrix([[2]])) == x + 5
+    assert len(calls) == 4
+    # the keys survive pickling (the derive step's snapshot) and rebuild equal arguments
+    name = f"{trace_of.__module__}.{trace_of.__qualname__}"
+    keys = list(pickle.loads(memo.dumps(memo.snapshot()))[name])
+    args, _ = keys[0]
+    problem, extra = memo.thaw(args)
+    assert isinstance(problem, _Problem) and problem.sizes == [2]
+    assert problem.m == sp.Matrix([[x, 1], [2, 3]]) and isinstance(problem.m, sp.MutableDenseMatrix)
+    assert isinstance(extra, sp.MutableDenseMatrix) and extra == sp.Matrix([[1]])
+    assert trace_of(problem, extra) == x + 4 and len(calls) == 4
+
+
+def test_functions_and_hashable_values_are_their_own_keys():
+    x = sp.Symbol("x")
+    for value in (x, 3, "a", (x, 1), sp.ImmutableMatrix([x]), sp.sin, _plain_function):
+        assert memo.freeze(value) == value and memo.thaw(memo.freeze(value)) == value

@@ -228,3 +228,48 @@ def test_execution_is_reproducible(tmp_path):
     assert first == second
     assert "after flush" in first and "&lt;object at 0x1&gt;" in first
     assert "<title>demo</title>" in first
+
+
+# --------------------------------------------------------------------------- code cells
+
+_TRICKY_CODE = (
+    "a = \"<b>&amp;</b>\" if x < 3 > y & z else 'it\\'s'  # ° ≈ é\n"
+    "\tprint(f\"{a!r:>10}\", end='')\n"
+    "%matplotlib inline\n!ls -l | grep '>'\n"
+    "def f(x):  # <script>alert(1)</script> &nbsp; &#39;\n    return x @ y ** -1\n"
+)
+
+
+@pytest.mark.parametrize("paper", ["altimeter_attitude", "north_finding", "platform_drift"])
+def test_code_cells_are_what_bleach_makes_of_them(paper):
+    from nbconvert.filters.highlight import Highlight2HTML
+    from nbconvert.filters.strings import clean_html
+
+    from pipeline.registry import ROOT
+
+    highlight = Highlight2HTML(pygments_lexer="ipython3")
+    nb = nbformat.read(ROOT / "notebooks" / f"{paper}.ipynb", as_version=4)
+    sources = [c.source for c in nb.cells if c.cell_type == "code"] + [_TRICKY_CODE]
+    fast = 0
+    for source in sources:
+        html = highlight(source, metadata={})
+        assert NH.clean_code_html(html) == clean_html(html), source[:200]
+        fast += bool(NH._PYGMENTS_HTML.fullmatch(html))
+    assert fast == len(sources)  # every cell took the fast path, and it agreed with bleach
+
+
+@pytest.mark.parametrize(
+    "html",
+    [
+        '<div class="highlight"><pre><span class="n">a</span> &lt; b\r\nc</pre></div>',
+        '<div class="highlight"><pre>a &nbsp; &#39; &quot; b & c</pre></div>',
+        '<div class="highlight"><pre><a href="x">a</a><span style="color: red">b</span></pre></div>',
+        '<div class="highlight"><pre>nul \x00 and \x0c</pre></div>',
+        "<pre><script>alert(1)</script><!-- c --></pre>",
+    ],
+)
+def test_other_markup_goes_through_bleach(html):
+    from nbconvert.filters.strings import clean_html
+
+    assert not NH._PYGMENTS_HTML.fullmatch(html)
+    assert NH.clean_code_html(html) == clean_html(html)
