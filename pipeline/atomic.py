@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
@@ -84,18 +85,68 @@ def _formatted(frame: pd.DataFrame) -> pd.DataFrame:
     return out
 
 
+#: what makes the csv module quote a field (QUOTE_MINIMAL, delimiter ",", line end "\n")
+_NEEDS_QUOTES = re.compile(r'[,"\r\n]')
+
+
+def _plain_text(values: pd.Series) -> list[str] | None:
+    """A column's fields as ``to_csv`` writes them when none needs quoting: int64 and bool
+    values as ``str`` gives them, strings as they are; None for any other column (floats of
+    other widths, missing values, other objects, a field with a comma, quote or line end)."""
+    dtype = values.dtype
+    if dtype == np.int64 or dtype == np.bool_:
+        return list(map(str, values.tolist()))
+    if dtype != np.dtype(object) and not isinstance(dtype, pd.StringDtype):
+        return None
+    text = values.tolist()
+    if not all(type(v) is str for v in text) or _NEEDS_QUOTES.search("\x00".join(text)):
+        return None
+    return text
+
+
+def _csv_text(frame: pd.DataFrame) -> str | None:
+    """The text ``frame.to_csv(index=False, lineterminator="\\n")`` writes, joined directly
+    when every column is plain (:func:`_plain_text`) and there are two or more (the csv module
+    quotes an empty field alone on its row); None otherwise. It takes about half the CPU of
+    pandas' writer (every reference CSV, mc_trials_judged.csv's ~300,000 rows included).
+
+    >>> f = pd.DataFrame({"n": [1, -2], "ok": [True, False], "s": ["a b", ""], "x": ["0.5", ""]})
+    >>> _csv_text(f) == f.to_csv(index=False, lineterminator="\\n")
+    True
+    >>> _csv_text(f.assign(s=["a,b", ""])) is None, _csv_text(f[["n"]]) is None
+    (True, True)
+    """
+    if frame.shape[1] < 2:
+        return None
+    names = [c if isinstance(c, str) else None for c in frame.columns]
+    if any(n is None for n in names) or _NEEDS_QUOTES.search("\x00".join(names)):
+        return None
+    columns = []
+    for loc in range(frame.shape[1]):
+        text = _plain_text(frame.iloc[:, loc])
+        if text is None:
+            return None
+        columns.append(text)
+    lines = [",".join(names), *map(",".join, zip(*columns, strict=True))]
+    return "\n".join(lines) + "\n"
+
+
+def _write_frame(path: Path, frame: pd.DataFrame) -> None:
+    text = _csv_text(frame)
+    if text is None:
+        frame.to_csv(path, index=False, float_format="%.17g", lineterminator="\n")
+    else:
+        with open(path, "w", encoding="utf-8", newline="") as fh:
+            fh.write(text)
+
+
 def write_csv(path: str | os.PathLike[str], frame: pd.DataFrame, columns: list[str]) -> Path:
     """Write ``frame[columns]`` as CSV atomically; fails if a contract column is missing.
     Floats are written with ``%.17g`` (round-trip exact), NaN as an empty field."""
     missing = [c for c in columns if c not in frame.columns]
     if missing:
         raise ValueError(f"{path}: missing contract columns {missing}")
-    return write_atomic(
-        path,
-        lambda p: _formatted(frame[columns]).to_csv(
-            p, index=False, float_format="%.17g", lineterminator="\n"
-        ),
-    )
+    return write_atomic(path, lambda p: _write_frame(p, _formatted(frame[columns])))
 
 
 def write_json(path: str | os.PathLike[str], data: Any) -> Path:

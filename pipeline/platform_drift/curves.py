@@ -7,6 +7,7 @@ config}`` (:func:`read_results`). A curve is one case and scheme of a table, ind
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -59,10 +60,36 @@ def read_results(
     return out
 
 
+#: id of an errors table -> (a weak reference to it, its length, the row positions of each
+#: (case, scheme)); an entry leaves with its table
+_POSITIONS: dict[int, tuple[weakref.ref, int, dict[tuple[Any, Any], np.ndarray]]] = {}
+
+
+def _rows(errors: pd.DataFrame, case: str, scheme: str) -> pd.DataFrame:
+    """The rows of one case and scheme, in table order. Where each (case, scheme) sits is
+    found once per table (the verdicts ask ~200 curves of a few tables, and comparing every
+    row's strings took 2-10 ms a curve); the rows are taken from the table at each call, so a
+    change to its values is seen (a table whose case or scheme labels change in place, or
+    that grows or shrinks, would need a new frame: none does)."""
+    key = id(errors)
+    hit = _POSITIONS.get(key)
+    if hit is None or hit[0]() is not errors or hit[1] != len(errors):
+        where = errors.groupby(["case", "scheme"], sort=False).indices
+        hit = (weakref.ref(errors, lambda _ref, k=key: _POSITIONS.pop(k, None)), len(errors), where)
+        _POSITIONS[key] = hit
+    positions = hit[2].get((case, scheme))
+    return errors.iloc[:0] if positions is None else errors.iloc[positions]
+
+
 def curve(errors: pd.DataFrame, case: str, scheme: str) -> pd.Series:
-    """error_m of one case and scheme, indexed by t_s."""
-    rows = errors[(errors["case"] == case) & (errors["scheme"] == scheme)]
-    return rows.set_index("t_s")["error_m"].sort_index()
+    """error_m of one case and scheme, indexed by t_s.
+
+    >>> e = pd.DataFrame({"t_s": [10.0, 0.0, 0.0], "case": ["a", "a", "b"],
+    ...                   "scheme": ["s", "s", "s"], "error_m": [2.0, 1.0, 5.0]})
+    >>> curve(e, "a", "s").to_dict(), curve(e, "c", "s").empty
+    ({0.0: 1.0, 10.0: 2.0}, True)
+    """
+    return _rows(errors, case, scheme).set_index("t_s")["error_m"].sort_index()
 
 
 def loglog_slope(t: np.ndarray, y: np.ndarray) -> float:

@@ -38,10 +38,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from pipeline.generated import frames
 from pipeline.generated import platform_drift as gen
+from pipeline.platform_drift.dop853 import solve_ivp
 from pipeline.platform_drift.trajectory import Trajectory, c3, eq2_angles
 
 __all__ = ["InitialState", "initial_state", "simulate", "N_STATE"]
@@ -144,7 +144,8 @@ def make_rhs(traj: Trajectory, drift: np.ndarray):
     rg = traj.rho
     gm, omega_e = traj.earth.gm, traj.earth.omega_e
     r_cmd = 0.0  # eq. 25: the third gyro is commanded zero in navigation
-    r_m_diag = drift[:, 2]  # diagnostic: eq. 16 told the platform's true azimuth rate
+    # eq. 16's r_m: 0 for the algorithm; the diagnostic is told the platform's true azimuth rate
+    r_m_both = np.concatenate((np.zeros(n), drift[:, 2]))
 
     def rhs(t: float, y: np.ndarray) -> np.ndarray:
         tr = traj.at(t)
@@ -172,12 +173,19 @@ def make_rhs(traj: Trajectory, drift: np.ndarray):
             wx, wy, fx, fy, p, q, r, p_dot, q_dot, z, z_dot, rg, gm
         )
         out = np.empty_like(Y)
-        # eq. 16 with p_m = omega_x, q_m = omega_y, r_m = 0 (and the diagnostic r_m = b_g3)
-        for col, la, ps, r_m in ((15, lat, psi, 0.0), (18, lat2, psi2, r_m_diag)):
-            lon_dot, lat_dot, psi_dot = gen.position_rates(wx, wy, r_m, la, ps, omega_e)
-            out[:, col] = lat_dot
-            out[:, col + 1] = lon_dot
-            out[:, col + 2] = psi_dot
+        # eq. 16 with p_m = omega_x, q_m = omega_y, r_m = 0 (and the diagnostic r_m = b_g3):
+        # both in one call of the generated function (the cases twice: algorithm, diagnostic)
+        lon_dot, lat_dot, psi_dot = gen.position_rates(
+            np.concatenate((wx, wx)),
+            np.concatenate((wy, wy)),
+            r_m_both,
+            np.concatenate((lat, lat2)),
+            np.concatenate((psi, psi2)),
+            omega_e,
+        )
+        out[:, 15:21] = np.column_stack(
+            (lat_dot[:n], lon_dot[:n], psi_dot[:n], lat_dot[n:], lon_dot[n:], psi_dot[n:])
+        )
         # physical platform: commanded rates plus drift
         w = np.column_stack((p, q, np.full(n, r_cmd))) + drift
         out[:, :9] = (C @ frames.skew(w[:, 0], w[:, 1], w[:, 2])).reshape(n, 9)
@@ -212,7 +220,6 @@ def simulate(
         make_rhs(traj, drift),
         (float(t_eval[0]), float(t_eval[-1])),
         _y0(init, n),
-        method="DOP853",
         t_eval=t_eval,
         rtol=rtol,
         atol=_atol(n),

@@ -26,10 +26,10 @@ State per case (13): C_b^n (9, row-major), v_N, v_E, lat, lon.
 from __future__ import annotations
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from pipeline.generated import frames
 from pipeline.generated import platform_drift as gen
+from pipeline.platform_drift.dop853 import solve_ivp
 from pipeline.platform_drift.trajectory import Trajectory
 
 __all__ = ["simulate", "N_STATE", "NWU_TO_NED"]
@@ -61,7 +61,8 @@ def make_rhs(traj: Trajectory, drift_b: np.ndarray):
         w_en = frames.transport_rate_n_velocity(vn, ve, lat, rho)
         w_in = w_ie + w_en
         w_meas = w_b[None, :] + drift_b
-        c_dot = C @ _skew(w_meas) - _skew(w_in) @ C
+        skews = _skew(np.concatenate((w_meas, w_in)))  # both in one call of the generated skew
+        c_dot = C @ skews[:n] - skews[n:] @ C
         f_n = C @ f_b
         # eq. 10 in NED: f + g - (2 omega_ie + omega_en) x v - omega_ie x (omega_ie x r)
         vn_dot, ve_dot = gen.strapdown_velocity_rates(f_n[:, 0], f_n[:, 1], vn, ve, lat, rho, we)
@@ -101,7 +102,6 @@ def simulate(
         make_rhs(traj, drift_b),
         (float(t_eval[0]), float(t_eval[-1])),
         np.tile(row, n),
-        method="DOP853",
         t_eval=t_eval,
         rtol=rtol,
         atol=_atol(n),

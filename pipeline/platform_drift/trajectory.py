@@ -37,7 +37,8 @@ west; the course ``chi`` turns from north toward east. Everything is in SI units
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -71,7 +72,12 @@ class Path:
 
 @dataclass(frozen=True)
 class Truth:
-    """The truth at one instant (inertial-frame vectors as 3-element numpy arrays)."""
+    """The truth at one instant (inertial-frame vectors as 3-element numpy arrays).
+
+    The vectors ``r_i``, ``v_i``, ``a_i``, ``f_i``, the rate ``w_nwu`` and the body azimuth
+    ``psi_b``, ``psi_b_dot`` are computed when first read (the integrators' right-hand sides
+    read only some of them, at every evaluation), by the same operations in the same order.
+    """
 
     lat: float
     lon: float
@@ -79,14 +85,67 @@ class Truth:
     lat_ddot: float
     lon_dot: float  # Earth-relative longitude rate
     lon_ddot: float
-    r_i: np.ndarray  # position from the Earth's centre, m
-    v_i: np.ndarray  # inertial velocity, m/s
-    a_i: np.ndarray  # inertial acceleration, m/s^2
-    f_i: np.ndarray  # specific force a - g_mass, m/s^2
     nwu_i: np.ndarray  # 3x3, columns N, W, U in inertial coordinates
-    w_nwu: np.ndarray  # inertial rate of NWU, in NWU, rad/s
-    psi_b: float  # body azimuth about up (north toward west), rad
-    psi_b_dot: float
+    lam_dot: float = field(repr=False)  # inertial longitude rate
+    traj: Trajectory = field(repr=False)
+
+    @cached_property
+    def _axes(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, float, float]:
+        """North, east, up (inertial coordinates), cos(lat), sin(lat)."""
+        nwu = self.nwu_i
+        return nwu[:, 0], -nwu[:, 1], nwu[:, 2], math.cos(self.lat), math.sin(self.lat)
+
+    @cached_property
+    def r_i(self) -> np.ndarray:
+        """Position from the Earth's centre, m."""
+        return self.traj.rho * self._axes[2]
+
+    @cached_property
+    def v_i(self) -> np.ndarray:
+        """Inertial velocity, m/s."""
+        north, east, _, cl, _ = self._axes
+        return self.traj.rho * (self.lat_dot * north + self.lam_dot * cl * east)
+
+    @cached_property
+    def a_i(self) -> np.ndarray:
+        """Inertial acceleration, m/s^2."""
+        north, east, up, cl, sl = self._axes
+        lat_d, lat_dd, lam_d, lam_dd = self.lat_dot, self.lat_ddot, self.lam_dot, self.lon_ddot
+        return self.traj.rho * (
+            (lat_dd + lam_d * lam_d * sl * cl) * north
+            + (lam_dd * cl - 2.0 * lam_d * lat_d * sl) * east
+            - (lat_d * lat_d + lam_d * lam_d * cl * cl) * up
+        )
+
+    @cached_property
+    def f_i(self) -> np.ndarray:
+        """Specific force a - g_mass, m/s^2."""
+        return self.a_i + (self.traj.earth.gm / self.traj.rho**2) * self._axes[2]
+
+    @cached_property
+    def w_nwu(self) -> np.ndarray:
+        """Inertial rate of NWU, in NWU, rad/s: the transport rate of NED at the inertial
+        longitude rate, in NWU axes."""
+        return self.traj.w_nwu_memo(self.lat, self.lat_dot, self.lam_dot)
+
+    @cached_property
+    def psi_b(self) -> float:
+        """Body azimuth about up (north toward west), rad: it follows the course."""
+        traj = self.traj
+        return traj.psi0 - (traj.course(self.lat) - traj.chi0)
+
+    @cached_property
+    def psi_b_dot(self) -> float:
+        """Its rate: chi_dot = -dlat dlon sin(lat) lat_dot / (dlat^2 + dlon^2 cos^2)."""
+        p, traj = self.traj.path, self.traj
+        return -(
+            float(gen.course_rate(p.dlat, p.dlon, self.lat, self.lat_dot)) if traj.moving else 0.0
+        )
+
+    @cached_property
+    def c3_b(self) -> np.ndarray:
+        """C3(psi_b) of eq. 2 (read-only)."""
+        return self.traj.c3_memo(self.psi_b)
 
 
 def c3(psi: float) -> np.ndarray:
@@ -152,6 +211,8 @@ class Trajectory:
         self.s_dot_cruise = 1.0 / (tt - tr) if moving else 0.0
         self.chi0 = self.course(path.lat0)
         self.mount = np.eye(3)
+        self._c3_last: tuple[tuple[float, float], np.ndarray] | None = None
+        self._w_nwu_last: tuple[tuple[tuple[float, float], ...], np.ndarray] | None = None
 
     # ---- progress s(t) and its derivatives ---------------------------------------------
     def progress(self, t: float) -> tuple[float, float, float]:
@@ -194,48 +255,37 @@ class Trajectory:
         return self.path.lat0 + self.path.dlat * s, self.path.lon0 + self.path.dlon * s
 
     # ---- full truth at one instant -------------------------------------------------------
-    def at(self, t: float) -> Truth:
-        p, e = self.path, self.earth
-        rho = self.rho
+    def latlon_rates(self, t: float) -> tuple[float, float, float, float, float, float]:
+        """(lat, lon, lat_dot, lat_ddot, lon_dot, lon_ddot) at ``t``: the Earth-relative part
+        of :meth:`at`, without the frames."""
+        p = self.path
         s, sd, sdd = self.progress(t)
-        lat = p.lat0 + p.dlat * s
-        lon = p.lon0 + p.dlon * s
-        lat_d, lat_dd = p.dlat * sd, p.dlat * sdd
+        return (
+            p.lat0 + p.dlat * s,
+            p.lon0 + p.dlon * s,
+            p.dlat * sd,
+            p.dlat * sdd,
+            p.dlon * sd,
+            p.dlon * sdd,
+        )
+
+    def at(self, t: float) -> Truth:
+        e = self.earth
+        lat, lon, lat_dot, lat_ddot, lon_dot, lon_ddot = self.latlon_rates(t)
         lam = lon + e.omega_e * t
-        lam_d, lam_dd = p.dlon * sd + e.omega_e, p.dlon * sdd
-        cl, sl = math.cos(lat), math.sin(lat)
         # rows of [T]^{NE} at the inertial longitude: north, east, down in inertial axes
         mat_n_i = frames.mat_ne(lat, lam)
-        north, east, up = mat_n_i[0], mat_n_i[1], -mat_n_i[2]
-        r_i = rho * up
-        v_i = rho * (lat_d * north + lam_d * cl * east)
-        a_i = rho * (
-            (lat_dd + lam_d * lam_d * sl * cl) * north
-            + (lam_dd * cl - 2.0 * lam_d * lat_d * sl) * east
-            - (lat_d * lat_d + lam_d * lam_d * cl * cl) * up
-        )
-        f_i = a_i + (e.gm / rho**2) * up
-        nwu = np.column_stack((north, -east, up))
-        # inertial rate of NED (transport rate at the inertial longitude rate), in NWU axes
-        w_nwu = frames.transport_rate_n(lat, lat_d, lam_d) * np.array([1.0, -1.0, -1.0])
-        # body yaw follows the course: chi_dot = -dlat dlon sin(lat) lat_dot / (dlat^2 + dlon^2 cos^2)
-        chi = self.course(lat)
-        chi_d = float(gen.course_rate(p.dlat, p.dlon, lat, lat_d)) if self.moving else 0.0
+        nwu = np.column_stack((mat_n_i[0], -mat_n_i[1], -mat_n_i[2]))
         return Truth(
             lat=lat,
             lon=lon,
-            lat_dot=lat_d,
-            lat_ddot=lat_dd,
-            lon_dot=p.dlon * sd,
-            lon_ddot=lam_dd,
-            r_i=r_i,
-            v_i=v_i,
-            a_i=a_i,
-            f_i=f_i,
+            lat_dot=lat_dot,
+            lat_ddot=lat_ddot,
+            lon_dot=lon_dot,
+            lon_ddot=lon_ddot,
             nwu_i=nwu,
-            w_nwu=w_nwu,
-            psi_b=self.psi0 - (chi - self.chi0),
-            psi_b_dot=-chi_d,
+            lam_dot=lon_dot + e.omega_e,
+            traj=self,
         )
 
     def specific_force_in(self, tr: Truth, c_xi: np.ndarray) -> np.ndarray:
@@ -264,11 +314,31 @@ class Trajectory:
         )
         return np.stack(f, axis=-1)
 
+    def c3_memo(self, psi: float) -> np.ndarray:
+        """:func:`c3` of ``psi``, read-only, kept for the next call with the same ``psi`` (at
+        rest the body azimuth never changes)."""
+        key = (float(psi), math.copysign(1.0, psi))  # -0.0 is not 0.0 here: sin(-0.0) = -0.0
+        if self._c3_last is None or self._c3_last[0] != key:
+            matrix = c3(psi)
+            matrix.flags.writeable = False
+            self._c3_last = (key, matrix)
+        return self._c3_last[1]
+
+    def w_nwu_memo(self, lat: float, lat_dot: float, lam_dot: float) -> np.ndarray:
+        """The inertial rate of NWU in NWU axes (:attr:`Truth.w_nwu`), read-only, kept for the
+        next call with the same arguments (at rest they never change)."""
+        key = tuple((float(a), math.copysign(1.0, a)) for a in (lat, lat_dot, lam_dot))
+        if self._w_nwu_last is None or self._w_nwu_last[0] != key:
+            w = frames.transport_rate_n(lat, lat_dot, lam_dot) * np.array([1.0, -1.0, -1.0])
+            w.flags.writeable = False
+            self._w_nwu_last = (key, w)
+        return self._w_nwu_last[1]
+
     def body_i(self, tr: Truth) -> np.ndarray:
         """C_b^i (columns = body axes in inertial coordinates) for the truth ``tr``."""
-        return tr.nwu_i @ c3(tr.psi_b) @ self.mount
+        return tr.nwu_i @ tr.c3_b @ self.mount
 
     def body_rate(self, tr: Truth) -> np.ndarray:
         """True inertial angular rate of the body, in body axes (rad/s)."""
-        w = c3(tr.psi_b).T @ tr.w_nwu + np.array([0.0, 0.0, tr.psi_b_dot])
+        w = tr.c3_b.T @ tr.w_nwu + np.array([0.0, 0.0, tr.psi_b_dot])
         return self.mount.T @ w

@@ -62,8 +62,8 @@ def _max_ground_speed(earth, route, psi0: float, t_end: float) -> float:
     traj = Trajectory(earth, route, psi0)
     best = 0.0
     for t in np.linspace(0.0, t_end, _SAMPLES):
-        tr = traj.at(float(t))
-        speed = traj.rho * float(np.hypot(tr.lat_dot, tr.lon_dot * np.cos(tr.lat)))
+        lat, _, lat_dot, _, lon_dot, _ = traj.latlon_rates(float(t))
+        speed = traj.rho * float(np.hypot(lat_dot, lon_dot * np.cos(lat)))
         best = max(best, speed)
     return best
 
