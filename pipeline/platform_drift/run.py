@@ -256,7 +256,11 @@ def run_scenario(
         generated_sha256=_sha256_file(GENERATED),
         seeds=None,
         seed_scheme="none: deterministic simulation, no random numbers",
-        integrator={"method": "DOP853", "rtol": sc.rtol, "library": "scipy.integrate.solve_ivp"},
+        integrator={
+            "method": "DOP853",
+            "rtol": sc.rtol,
+            "library": "pipeline.platform_drift.dop853 (scipy.integrate.solve_ivp DOP853, bit for bit)",
+        },
         constants=analytic.constants(sc),
         runs=runs,
     )
