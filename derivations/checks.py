@@ -312,7 +312,9 @@ def run_check(check: Check) -> AuditRow:
     if err < REL_TOL:
         note = check.if_match or "zero numerically at 40 random points"
         return AuditRow(check.equation, "match", "0", note, **exprs)
-    simplified = [_tidy(r) for r in raw]
+    # each distinct residual tidied once (the elements of a matrix often repeat one residual)
+    tidied: dict[sp.Expr, sp.Expr] = {}
+    simplified = [tidied[r] if r in tidied else tidied.setdefault(r, _tidy(r)) for r in raw]
     if all(r == 0 for r in simplified):
         return AuditRow(check.equation, "match", "0", check.if_match, **exprs)
     text = "; ".join(str(r) for r in simplified) if len(simplified) > 1 else str(simplified[0])

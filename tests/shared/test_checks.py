@@ -234,3 +234,16 @@ def test_the_large_form_is_the_shorter_candidate_and_equals_the_residual():
     assert sp.simplify(shown - split) == 0
     residual = _large_residual()  # a polynomial: cancelling gains nothing, it stays as it is
     assert sp.expand(checks._tidy_large(residual) - residual) == 0
+
+
+def test_a_repeated_residual_is_tidied_once_and_shown_for_every_element(monkeypatch):
+    import derivations.checks as checks
+
+    calls = []
+    real = checks._tidy
+    monkeypatch.setattr(checks, "_tidy", lambda r: calls.append(r) or real(r))
+    printed = sp.Matrix([[2 * x, 2 * x], [x, 2 * x]])
+    derived = sp.Matrix([[3 * x, 3 * x], [x, 3 * x]])
+    row = run_check(Check("m", printed, derived, **_judged("wrong_term")))
+    assert sorted(calls, key=str) == [-x, 0]
+    assert row.residual == "-x; -x; 0; -x"
