@@ -182,14 +182,16 @@ def numeric_residual(
     )
     rng = np.random.default_rng(seed)
     worst = 0.0
-    funcs = [sp.lambdify(symbols, e, "numpy") for e in residuals]
-    sfuncs = [sp.lambdify(symbols, e, "numpy") for e in scales]
+    # one function for every residual and scale (one lambdify, not two per element); each
+    # element's code and value are what a function of its own gives
+    values_at = sp.lambdify(symbols, [*residuals, *scales], "numpy")
+    n = len(residuals)
     for _ in range(N_POINTS):
         point = [rng.uniform(*((sample or {}).get(s, (0.15, 1.3)))) for s in symbols]
-        for f, g in zip(funcs, sfuncs, strict=True):
-            with np.errstate(all="ignore"):
-                r = complex(f(*point))
-                s = complex(g(*point))
+        with np.errstate(all="ignore"):
+            values = values_at(*point)
+            pairs = [(complex(r), complex(s)) for r, s in zip(values[:n], values[n:], strict=True)]
+        for r, s in pairs:
             if not np.isfinite(r):
                 continue
             worst = max(worst, abs(r) / (abs(s) + 1e-300))

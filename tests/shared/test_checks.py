@@ -247,3 +247,18 @@ def test_a_repeated_residual_is_tidied_once_and_shown_for_every_element(monkeypa
     row = run_check(Check("m", printed, derived, **_judged("wrong_term")))
     assert sorted(calls, key=str) == [-x, 0]
     assert row.residual == "-x; -x; 0; -x"
+
+
+def test_the_numeric_residual_of_several_elements_is_the_worst_element():
+    from derivations.checks import numeric_residual
+
+    y = sp.Symbol("y", real=True)
+    residuals = [sp.sin(x) - x + y * 1e-3, x**2 - x * y, sp.S.Zero]
+    scales = [sp.Abs(sp.sin(x)) + x, x**2 + x * y, sp.S.One]
+    # one element at a time, at the same points (a zero element whose scale has both symbols)
+    each = [
+        numeric_residual([r, sp.S.Zero], [s, x + y]) for r, s in zip(residuals, scales, strict=True)
+    ]
+    assert numeric_residual(residuals, scales) == max(each) > 0
+    # each residual is paired with its own scale
+    assert numeric_residual(residuals[:2], scales[::-1][1:]) != max(each[:2])
