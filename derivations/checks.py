@@ -182,14 +182,16 @@ def numeric_residual(
     )
     rng = np.random.default_rng(seed)
     worst = 0.0
-    funcs = [sp.lambdify(symbols, e, "numpy") for e in residuals]
-    sfuncs = [sp.lambdify(symbols, e, "numpy") for e in scales]
+    # one function for every residual and scale (one lambdify, not two per element); each
+    # element's code and value are what a function of its own gives
+    values_at = sp.lambdify(symbols, [*residuals, *scales], "numpy")
+    n = len(residuals)
     for _ in range(N_POINTS):
         point = [rng.uniform(*((sample or {}).get(s, (0.15, 1.3)))) for s in symbols]
-        for f, g in zip(funcs, sfuncs, strict=True):
-            with np.errstate(all="ignore"):
-                r = complex(f(*point))
-                s = complex(g(*point))
+        with np.errstate(all="ignore"):
+            values = values_at(*point)
+            pairs = [(complex(r), complex(s)) for r, s in zip(values[:n], values[n:], strict=True)]
+        for r, s in pairs:
             if not np.isfinite(r):
                 continue
             worst = max(worst, abs(r) / (abs(s) + 1e-300))
@@ -205,9 +207,39 @@ def numeric_residual(
 # every run.
 SIMPLIFY_SECONDS = 600
 
+# A residual of more than LARGE_OPS operations after ``trigsimp`` is not passed to ``simplify``:
+# it gets the shorter of two of simplify's own candidates (:func:`_tidy_large`). simplify's further
+# passes over such a residual (trigsimp again, now of the residual combined into one fraction,
+# whose numerator SymPy factors by Wang's algorithm) took seconds each (eq. 57 of the
+# north-finding paper ~4 CPU-s, half its audit's simplify time) and, on every residual of the
+# three papers above 40 operations, gave nothing other than the shorter of these two candidates
+# (equation_audit.csv and equation_math.json of the three papers byte-identical with and without
+# this shortcut; tests/shared/test_checks.py compares the two on a large residual).
+LARGE_OPS = 40
+
 
 class _Timeout(Exception):
     pass
+
+
+def _tidy_large(trigsimped: sp.Expr) -> sp.Expr:
+    """The shorter (``count_ops``, the first on a tie) of simplify's first two candidates for a
+    large residual already through ``trigsimp``: the residual with its signs and absolute values
+    normalised as simplify starts (``collect_abs(signsimp(.))``), and that cancelled into one
+    fraction with its common factors pulled out (simplify's ``cancel`` and
+    ``factor_terms(sign=False)``). Both are the residual rewritten, so equal to it."""
+    from sympy.simplify.simplify import collect_abs, signsimp
+
+    start = collect_abs(signsimp(trigsimped))
+    return min((start, sp.factor_terms(sp.cancel(start), sign=False)), key=sp.count_ops)
+
+
+def _simplified(residual: sp.Expr) -> sp.Expr:
+    """``trigsimp``, then ``simplify`` (a small residual) or :func:`_tidy_large` (a large one)."""
+    trigsimped = sp.trigsimp(residual)
+    if sp.count_ops(trigsimped) > LARGE_OPS:
+        return _tidy_large(trigsimped)
+    return sp.simplify(trigsimped)
 
 
 def _tidy(residual: sp.Expr) -> sp.Expr:
@@ -232,7 +264,7 @@ def _tidy(residual: sp.Expr) -> sp.Expr:
     previous = signal.signal(signal.SIGPROF, _raise)
     signal.setitimer(signal.ITIMER_PROF, SIMPLIFY_SECONDS)
     try:
-        return sp.simplify(sp.trigsimp(residual))
+        return _simplified(residual)
     except _Timeout:
         import sys
 
@@ -282,7 +314,9 @@ def run_check(check: Check) -> AuditRow:
     if err < REL_TOL:
         note = check.if_match or "zero numerically at 40 random points"
         return AuditRow(check.equation, "match", "0", note, **exprs)
-    simplified = [_tidy(r) for r in raw]
+    # each distinct residual tidied once (the elements of a matrix often repeat one residual)
+    tidied: dict[sp.Expr, sp.Expr] = {}
+    simplified = [tidied[r] if r in tidied else tidied.setdefault(r, _tidy(r)) for r in raw]
     if all(r == 0 for r in simplified):
         return AuditRow(check.equation, "match", "0", check.if_match, **exprs)
     text = "; ".join(str(r) for r in simplified) if len(simplified) > 1 else str(simplified[0])

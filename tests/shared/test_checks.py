@@ -190,3 +190,75 @@ def test_a_residual_over_the_cpu_budget_is_shown_factored(monkeypatch):
     monkeypatch.setattr(checks, "SIMPLIFY_SECONDS", 0.1)
     monkeypatch.setattr(checks.sp, "simplify", busy)
     assert str(checks._tidy(2 * x + 2)) == "2*(x + 1)"  # factor_terms, not the simplified form
+
+
+# a residual of more than LARGE_OPS operations after trigsimp gets the shorter of simplify's
+# first two candidates instead of simplify's further (costly) passes
+def _large_residual() -> sp.Expr:
+    a, b, c = sp.symbols("a b c", real=True)
+    y, z = sp.symbols("y z", real=True)
+    terms = a * sp.sin(x) + b * sp.cos(y) + c * sp.sin(z)
+    return sp.expand((terms + 1) ** 3 - terms**3)
+
+
+def test_a_large_residual_is_shown_as_simplify_shows_it_without_calling_it(monkeypatch):
+    import derivations.checks as checks
+
+    residual = _large_residual()
+    assert sp.count_ops(sp.trigsimp(residual)) > checks.LARGE_OPS
+    expected = sp.simplify(sp.trigsimp(residual))
+
+    def not_called(expr):
+        raise AssertionError("simplify called on a large residual")
+
+    monkeypatch.setattr(checks.sp, "simplify", not_called)
+    assert checks._tidy(residual) == expected
+
+
+def test_a_small_residual_still_goes_through_simplify(monkeypatch):
+    import derivations.checks as checks
+
+    seen = []
+    monkeypatch.setattr(checks.sp, "simplify", lambda expr: seen.append(expr) or expr)
+    checks._tidy(sp.sin(x) ** 2 + sp.cos(x) ** 2 + x)
+    assert seen == [x + 1]
+
+
+def test_the_large_form_is_the_shorter_candidate_and_equals_the_residual():
+    import derivations.checks as checks
+
+    a, b, c = sp.symbols("a b c", real=True)
+    split = a / (x + 1) + b / (x + 1) - c / (x + 1) + a * b / (x + 1)
+    shown = checks._tidy_large(split)
+    assert shown == (a * b + a + b - c) / (x + 1)  # cancelled: fewer operations
+    assert sp.simplify(shown - split) == 0
+    residual = _large_residual()  # a polynomial: cancelling gains nothing, it stays as it is
+    assert sp.expand(checks._tidy_large(residual) - residual) == 0
+
+
+def test_a_repeated_residual_is_tidied_once_and_shown_for_every_element(monkeypatch):
+    import derivations.checks as checks
+
+    calls = []
+    real = checks._tidy
+    monkeypatch.setattr(checks, "_tidy", lambda r: calls.append(r) or real(r))
+    printed = sp.Matrix([[2 * x, 2 * x], [x, 2 * x]])
+    derived = sp.Matrix([[3 * x, 3 * x], [x, 3 * x]])
+    row = run_check(Check("m", printed, derived, **_judged("wrong_term")))
+    assert sorted(calls, key=str) == [-x, 0]
+    assert row.residual == "-x; -x; 0; -x"
+
+
+def test_the_numeric_residual_of_several_elements_is_the_worst_element():
+    from derivations.checks import numeric_residual
+
+    y = sp.Symbol("y", real=True)
+    residuals = [sp.sin(x) - x + y * 1e-3, x**2 - x * y, sp.S.Zero]
+    scales = [sp.Abs(sp.sin(x)) + x, x**2 + x * y, sp.S.One]
+    # one element at a time, at the same points (a zero element whose scale has both symbols)
+    each = [
+        numeric_residual([r, sp.S.Zero], [s, x + y]) for r, s in zip(residuals, scales, strict=True)
+    ]
+    assert numeric_residual(residuals, scales) == max(each) > 0
+    # each residual is paired with its own scale
+    assert numeric_residual(residuals[:2], scales[::-1][1:]) != max(each[:2])
