@@ -26,6 +26,8 @@ from pipeline.generated import altimeter_attitude as gen
 
 __all__ = ["VARIANTS", "initial_state", "run_linear_kf"]
 
+CHUNK_TOL = 1e-17  # model.ChunkDiscretisation's default tol: where its series stop
+
 RADIAL_SIGMA = 1e-6  # p0_radial = "none": sigma of c along itself in P0, dimensionless
 P0_RADIAL = ("second_order", "none")
 
@@ -179,17 +181,19 @@ def _compiled_loop(
     vertical = np.asarray(model.gen.vertical_transition(dt), dtype=float).reshape(2, 2)
     gc = np.ascontiguousarray(model.GAMMA_COLUMNS)
     alt = np.ascontiguousarray(inputs.altimeter)
+    gyro = np.ascontiguousarray(inputs.gyro, dtype=float)
+    accel = np.ascontiguousarray(inputs.accel, dtype=float)
+    basis = np.ascontiguousarray(model._INPUT_BASIS)
+    coef = model.series_coefficients(dt)
+    gamma, update = use_gamma.astype(bool), np.asarray(use_update, dtype=bool)
     for c0 in range(0, T, chunk):
-        c1 = min(T, c0 + chunk)
-        disc = model.ChunkDiscretisation(
-            *model.a_blocks(inputs.gyro[:, c0:c1], inputs.accel[:, c0:c1]), dt
-        )
-        ok = kernels_c.linear_kf_chunk(
-            x, P, np.ascontiguousarray(disc.exp_w), np.stack(disc.f_psi), np.stack(disc.f_xi),
-            vertical, float(model.A_CONSTANT[4, 3]), np.asarray(L, dtype=float), g, float(k), dt,
-            gc, q_diag, R, alt, use_gamma.astype(bool), np.asarray(use_update, dtype=bool),
-            model.ChunkDiscretisation.A_DT_MAX, c0, cs, var,
+        status, theta_max = kernels_c.linear_kf_chunk(
+            x, P, gyro, accel, c0, min(T, c0 + chunk), basis, coef, CHUNK_TOL, vertical,
+            float(model.A_CONSTANT[4, 3]), np.asarray(L, dtype=float), g, float(k), dt, gc,
+            q_diag, R, alt, gamma, update, model.ChunkDiscretisation.A_DT_MAX, cs, var,
         )  # fmt: skip
-        if not ok:
+        if status == 2:
+            model.ChunkDiscretisation.check_rotation(theta_max)
+        if status:
             return None
     return cs, var
