@@ -103,9 +103,9 @@ def run_linear_kf(
     xs = np.empty((T + 1, N, 5))  # time-major while filling (contiguous writes)
     var = np.empty((T + 1, N, 2))  # roll/pitch variances J P_cc J^T (diagonal)
 
-    def euler_var(x, P):
-        cov = model.euler_cov_from_third_row(x[:, :3], P[:, :3, :3])
-        return np.stack([cov[:, 0, 0], cov[:, 1, 1]], -1)
+    def euler_var(x, P):  # x (..., 5), P (..., 5, 5): every leading axis at once
+        cov = model.euler_cov_from_third_row(x[..., :3], P[..., :3, :3])
+        return np.stack([cov[..., 0, 0], cov[..., 1, 1]], -1)
 
     xs[0], var[0] = x, euler_var(x, P)
     L = model.input_vector(dt, input_matrix)
@@ -120,6 +120,7 @@ def run_linear_kf(
         accel = np.tile(inputs.accel[:, c0:c1], (V, 1, 1))
         # eq. 26 at gamma = 0 for the whole chunk; k gamma enters per step (eq. 30)
         disc = model.ChunkDiscretisation(*model.a_blocks(gyro, accel), dt)
+        p_c = np.empty((c1 - c0, N, 5, 5))  # the chunk's P, for its variances in one pass
         for j, step in enumerate(range(c0, c1)):
             gamma = model.normalisation_error(x[:, :3])  # at xhat_{k-1|k-1}
             F = disc.transition(j, k * gamma)
@@ -138,7 +139,8 @@ def run_linear_kf(
                 P = P - K[:, :, None] * P[:, None, 4, :]  # (I - K H) P
             P = 0.5 * (P + np.swapaxes(P, -1, -2))
             xs[step + 1] = x
-            var[step + 1] = euler_var(x, P)
+            p_c[j] = P
+        var[c0 + 1 : c1 + 1] = euler_var(xs[c0 + 1 : c1 + 1], p_c)
     if done:
         c, var = done  # run-major already
     else:

@@ -199,6 +199,19 @@ def test_kernel_first_call_holds_the_compile_lock(tmp_path, monkeypatch):
     assert disp.dispatcher.signatures and disp(2.0) == 3.0
 
 
+def test_ukf_without_third_row_gives_the_same_angles(short):
+    """run_ukf(third_row=False) (the UKF tuning's form): the same roll, pitch and sigmas bit
+    for bit, c left NaN instead of computed."""
+    sc, inp = short
+    args = (sc.ukf_alpha, sc.ukf_beta, sc.ukf_kappa)
+    full = euler_filters.run_ukf(inp, *args)
+    lean = euler_filters.run_ukf(inp, *args, third_row=False)
+    for f in ("roll", "pitch", "roll_sigma", "pitch_sigma", "norm_error"):
+        np.testing.assert_array_equal(getattr(lean, f), getattr(full, f), err_msg=f)
+    assert lean.c.shape == full.c.shape and np.isnan(lean.c).all()
+    assert np.isfinite(full.c).all()
+
+
 def test_linear_kf_chunk_terms_are_chunk_discretisation_bit_for_bit(short):
     """The linear-KF kernel's own F terms (kernels_c.chunk_terms, chunk_order) are
     ChunkDiscretisation's numpy arrays bit for bit, signed zeros included (a stationary
