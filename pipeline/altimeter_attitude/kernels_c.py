@@ -67,10 +67,16 @@ def complementary_runs(gyro, accel, c0, dt, k_p, k_i):
 
 
 @jit.njit
-def _w_terms(gyro, accel, i, step, basis, dt, w, w2, f):
-    """W dt, (W dt)^2 (3, 3) and f (3,) of run i's IMU step: eq. 26's A at gamma = 0 from the
-    generated matrix's linear ``basis`` (model.a_blocks), bit for bit what numpy computes:
-    einsum sums from +0, and w @ w is OpenBLAS's dgemm (fused multiply-adds in k order)."""
+def chunk_terms(gyro, accel, i, step, basis, coef, order, dt, w, w2, v, pw, terms):
+    """The gamma-free parts of F of run i's IMU step by the very operations of
+    :class:`model.ChunkDiscretisation` (series of ``order`` terms): ``terms[0]`` its
+    ``exp_w``, ``terms[1, j]`` its ``f_psi[j]``, ``terms[2, j]`` its ``f_xi[j]``; returns
+    theta^2 = -trace((W dt)^2) / 2. Work arrays: ``w`` = W dt and ``w2`` = (W dt)^2 (3, 3),
+    ``v`` (3, 3) the rows f, f^T W dt, f^T (W dt)^2, ``pw`` the powers of -theta^2.
+
+    W and f: eq. 26's A at gamma = 0 from the generated matrix's linear ``basis``
+    (model.a_blocks); einsum sums from +0, np.trace left to right, and ``w @ w`` is
+    OpenBLAS's dgemm: fused multiply-adds in k order (jit.fma)."""
     for r in range(3):
         for s in range(3):
             t = 0.0
@@ -80,36 +86,47 @@ def _w_terms(gyro, accel, i, step, basis, dt, w, w2, f):
         t = 0.0
         for c in range(3):
             t += accel[i, step, c] * basis[3 + c, 3, r]
-        f[r] = t
+        v[0, r] = t
     for r in range(3):
         for s in range(3):
             t = jit.fma(w[r, 0], w[0, s], 0.0)
             t = jit.fma(w[r, 1], w[1, s], t)
             w2[r, s] = jit.fma(w[r, 2], w[2, s], t)
+    t2 = -0.5 * (w2[0, 0] + w2[1, 1] + w2[2, 2])
+    pw[0] = 1.0
+    for q in range(order // 2 + 1):
+        pw[q + 1] = pw[q] * -t2
+    for s in range(3):
+        v[1, s] = 0.0 + v[0, 0] * w[0, s] + v[0, 1] * w[1, s] + v[0, 2] * w[2, s]
+        v[2, s] = 0.0 + v[0, 0] * w2[0, s] + v[0, 1] * w2[1, s] + v[0, 2] * w2[2, s]
+    for row in range(7):  # c0 + A1 (W dt) + A2 (W dt)^2 (ChunkDiscretisation.collapse)
+        a1 = 0.0
+        for q in range(1, order + 1, 2):
+            a1 += coef[row, q] * pw[(q - 1) // 2]
+        a2 = 0.0
+        for q in range(2, order + 1, 2):
+            a2 += coef[row, q] * pw[(q - 2) // 2]
+        c0 = coef[row, 0]
+        if row == 0:
+            for r in range(3):
+                for s in range(3):
+                    terms[0, r, s] = c0 * (1.0 if r == s else 0.0) + a1 * w[r, s] + a2 * w2[r, s]
+        else:  # f^T (c0 I + A1 W dt + A2 (W dt)^2)
+            for r in range(3):
+                u = c0 * v[0, r] + a1 * v[1, r] + a2 * v[2, r]
+                terms[1 + (row - 1) // 3, (row - 1) % 3, r] = u
+    return t2
 
 
 @jit.njit
-def _series(coef, row, order, pw):
-    """(c0, A1, A2) of the series of ``coef[row]`` collapsed with the powers of -theta^2
-    (ChunkDiscretisation.collapse: the terms summed from 0 in the same order)."""
-    a1 = 0.0
-    for q in range(1, order + 1, 2):
-        a1 += coef[row, q] * pw[(q - 1) // 2]
-    a2 = 0.0
-    for q in range(2, order + 1, 2):
-        a2 += coef[row, q] * pw[(q - 2) // 2]
-    return coef[row, 0], a1, a2
-
-
-@jit.njit
-def chunk_order(gyro, accel, c0, c1, basis, coef, dt, tol, w, w2, f):
+def chunk_order(gyro, accel, c0, c1, basis, coef, dt, tol, w, w2, v, pw, terms):
     """ChunkDiscretisation's series order for steps c0 .. c1 - 1 of every run, from the
     largest rotation per step theta = |omega| dt; (order, theta_max)."""
     t2max, nan = 0.0, False
+    lowest = np.int64(2)  # the shortest series (an int64, not a literal: one specialisation)
     for i in range(gyro.shape[0]):
         for step in range(c0, c1):
-            _w_terms(gyro, accel, i, step, basis, dt, w, w2, f)
-            t2 = -0.5 * (w2[0, 0] + w2[1, 1] + w2[2, 2])
+            t2 = chunk_terms(gyro, accel, i, step, basis, coef, lowest, dt, w, w2, v, pw, terms)
             if math.isnan(t2):
                 nan = True
             elif t2 > t2max:
@@ -120,33 +137,6 @@ def chunk_order(gyro, accel, c0, c1, basis, coef, dt, tol, w, w2, f):
         order += 1
         term *= theta_max / (order + 1)
     return order, theta_max
-
-
-@jit.njit
-def chunk_terms(
-    gyro, accel, i, step, basis, coef, order, dt, w, w2, f, pw, fw, fw2, exp_w, fpsi, fxi
-):  # fmt: skip
-    """The gamma-free parts of F of run i's IMU step, :class:`model.ChunkDiscretisation`'s
-    ``exp_w`` (3, 3), ``f_psi`` and ``f_xi`` (as [j, r]) with series of ``order`` terms, by
-    its very operations (``w``, ``w2``, ``f``, ``pw``, ``fw``, ``fw2``: work arrays)."""
-    _w_terms(gyro, accel, i, step, basis, dt, w, w2, f)
-    t2 = -0.5 * (w2[0, 0] + w2[1, 1] + w2[2, 2])  # theta^2 (np.trace)
-    pw[0] = 1.0
-    for q in range(order // 2 + 1):
-        pw[q + 1] = pw[q] * -t2
-    for s in range(3):  # f^T W dt, f^T (W dt)^2 (einsum: sums from +0)
-        fw[s] = 0.0 + f[0] * w[0, s] + f[1] * w[1, s] + f[2] * w[2, s]
-        fw2[s] = 0.0 + f[0] * w2[0, s] + f[1] * w2[1, s] + f[2] * w2[2, s]
-    e0, e1, e2 = _series(coef, 0, order, pw)
-    for r in range(3):
-        for s in range(3):
-            exp_w[r, s] = e0 * (1.0 if r == s else 0.0) + e1 * w[r, s] + e2 * w2[r, s]
-    for j in range(3):
-        p0, p1, p2 = _series(coef, 1 + j, order, pw)
-        q0, q1, q2 = _series(coef, 4 + j, order, pw)
-        for r in range(3):
-            fpsi[j, r] = p0 * f[r] + p1 * fw[r] + p2 * fw2[r]
-            fxi[j, r] = q0 * f[r] + q1 * fw[r] + q2 * fw2[r]
 
 
 @jit.kernel
@@ -167,15 +157,11 @@ def linear_kf_chunk(
     per step theta_max > 0.5 (ChunkDiscretisation refuses it).
     """
     N, M = gyro.shape[0], x.shape[0]
-    w, w2, f = np.empty((3, 3)), np.empty((3, 3)), np.empty(3)
-    order, theta_max = chunk_order(gyro, accel, c0, c1, basis, coef, dt, tol, w, w2, f)
+    w, w2, v, terms = np.empty((3, 3)), np.empty((3, 3)), np.empty((3, 3)), np.empty((3, 3, 3))
+    pw = np.empty(coef.shape[1] // 2 + 2)
+    order, theta_max = chunk_order(gyro, accel, c0, c1, basis, coef, dt, tol, w, w2, v, pw, terms)
     if theta_max > 0.5:
         return 2, theta_max
-    pw = np.empty(order // 2 + 2)
-    exp_w = np.empty((3, 3))
-    fpsi = np.empty((3, 3))  # [j, r]: f^T Psi_j
-    fxi = np.empty((3, 3))
-    fw, fw2 = np.empty(3), np.empty(3)
     F = np.zeros((5, 5))
     G = np.empty((5, 6))
     FP = np.empty((5, 5))
@@ -184,10 +170,7 @@ def linear_kf_chunk(
     K = np.empty(5)
     for i in range(N):
         for step in range(c0, c1):
-            chunk_terms(
-                gyro, accel, i, step, basis, coef, order, dt, w, w2, f, pw, fw, fw2, exp_w,
-                fpsi, fxi,
-            )  # fmt: skip
+            chunk_terms(gyro, accel, i, step, basis, coef, order, dt, w, w2, v, pw, terms)
             z = alt[i, step + 1]
             for m in range(i, M, N):  # the variants of run i: one step of eq. 31
                 xm, Pm = x[m], P[m]
@@ -200,9 +183,9 @@ def linear_kf_chunk(
                 a2 = 0.5 * a**2
                 for r in range(3):
                     for s in range(3):
-                        F[r, s] = ea * exp_w[r, s]
-                    F[3, r] = fpsi[0, r] + a * fpsi[1, r] + a2 * fpsi[2, r]
-                    F[4, r] = a43 * (fxi[0, r] + a * fxi[1, r] + a2 * fxi[2, r])
+                        F[r, s] = ea * terms[0, r, s]
+                    F[3, r] = terms[1, 0, r] + a * terms[1, 1, r] + a2 * terms[1, 2, r]
+                    F[4, r] = a43 * (terms[2, 0, r] + a * terms[2, 1, r] + a2 * terms[2, 2, r])
                 for r in range(2):
                     for s in range(2):
                         F[3 + r, 3 + s] = vertical[r, s]

@@ -160,6 +160,7 @@ def ukf_runs(gyro, accel, alt, x0, P0, wm, wc, scale, dt, g, gyro_var, accel_var
     P = np.empty((n, n))
     dz = np.empty(S)
     K = np.empty(n)
+    centre = np.int64(0)  # (not a literal 0: the one specialisation of _rk4_point)
     for i in range(N):
         for a in range(n):
             x[a] = x0[i, a]
@@ -176,7 +177,7 @@ def ukf_runs(gyro, accel, alt, x0, P0, wm, wc, scale, dt, g, gyro_var, accel_var
             p0, p1 = X[0, 0], X[0, 1]  # the centre point: x, bit for bit
             _process_noise(p0, p1, dt, gyro_var, accel_var, q_floor, Q)
             # the centre point, keeping its stages' V_d rates for the points that share them
-            v1, v2, v3, v4 = _rk4_point(X, 0, dt, w0, w1, w2, f0, f1, f2, g, Xf)
+            v1, v2, v3, v4 = _rk4_point(X, centre, dt, w0, w1, w2, f0, f1, f2, g, Xf)
             f_0, f_1 = Xf[0, 0], Xf[0, 1]
             for j in range(1, S):
                 if _same_bits(X[j, 0], p0) and _same_bits(X[j, 1], p1):
@@ -260,7 +261,7 @@ def ekf_runs(gyro, accel, alt, x0, P0, dt, g, gyro_var, accel_var, R, q_floor):
             for a in range(n):
                 for b in range(n):
                     F[a, b] = (1.0 if a == b else 0.0) + dt * J[4 * a + b]
-            _rk4_point(xx, 0, dt, w0, w1, w2, f0, f1, f2, g, xn)
+            _rk4_point(xx, np.int64(0), dt, w0, w1, w2, f0, f1, f2, g, xn)
             for a in range(n):
                 x[a] = xn[0, a]
             for a in range(n):  # P = F P F^T + Q

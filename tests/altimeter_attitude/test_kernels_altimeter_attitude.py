@@ -226,28 +226,27 @@ def test_linear_kf_chunk_terms_are_chunk_discretisation_bit_for_bit(short):
     gyro[1, c0 + 1] = [-0.0, -0.0, -0.0]
     disc = model.ChunkDiscretisation(*model.a_blocks(gyro[:, c0:c1], accel[:, c0:c1]), dt)
     basis, coef = np.ascontiguousarray(model._INPUT_BASIS), model.series_coefficients(dt)
-    w, w2, f, pw = np.empty((3, 3)), np.empty((3, 3)), np.empty(3), np.empty(64)
-    fw, fw2, exp_w, fpsi, fxi = np.empty(3), np.empty(3), *np.empty((3, 3, 3))
+    w, w2, v, pw, terms = (np.empty(shape) for shape in ((3, 3), (3, 3), (3, 3), 22, (3, 3, 3)))
     order, theta_max = kernels_c.chunk_order(
-        gyro, accel, c0, c1, basis, coef, dt, linear_kf.CHUNK_TOL, w, w2, f
+        gyro, accel, c0, c1, basis, coef, dt, linear_kf.CHUNK_TOL, w, w2, v, pw, terms
     )
     theta2 = -0.5 * np.trace(disc.w_block * dt @ (disc.w_block * dt), axis1=-2, axis2=-1)
     assert theta_max == float(np.sqrt(theta2.max(initial=0.0))) and 2 < order < 40
     fma_blas = True
     for i in range(inp.n_runs):
         for j, step in enumerate(range(c0, c1)):
-            kernels_c.chunk_terms(
-                gyro, accel, i, step, basis, coef, order, dt, w, w2, f, pw, fw, fw2, exp_w,
-                fpsi, fxi,
-            )  # fmt: skip
+            t2 = kernels_c.chunk_terms(
+                gyro, accel, i, step, basis, coef, order, dt, w, w2, v, pw, terms
+            )
             fma_blas &= np.array_equal(w @ w, w2)
-            got = np.concatenate([exp_w.ravel(), fpsi.ravel(), fxi.ravel()])
+            got = terms.ravel()
             want = np.concatenate(
                 [disc.exp_w[i, j].ravel()]
                 + [disc.f_psi[q][i, j] for q in range(3)]
                 + [disc.f_xi[q][i, j] for q in range(3)]
             )
             if fma_blas:
+                assert t2 == theta2[i, j]
                 assert np.array_equal(got.view(np.int64), want.view(np.int64)), (i, step)
             else:
                 np.testing.assert_allclose(got, want, rtol=1e-14, atol=1e-18)
