@@ -1,9 +1,12 @@
 """The generated formulas compiled with numba, for the filter kernels (scalar arguments).
 
 :mod:`pipeline.generated.altimeter_attitude` stays the one source of every formula: its
-functions are compiled here as they are (``numba.njit(gen.f, cache=True)``), not re-typed.
-They end in ``_broadcast(out0, ...)``, which in compiled code is overloaded to return the
-outputs as a tuple of floats (scalars need no broadcasting), so a kernel can index it.
+functions are compiled here as they are (their code objects, ``numba.njit(cache=True)``), not
+re-typed, with ``np`` bound to the scalar ``math`` functions (numba lowers ``np.sin`` of a
+float to ``math.sin``'s code, so the numbers are the same, but typing numpy's ufuncs costs
+compile time). They end in ``_broadcast(out0, ...)``, which in compiled code is overloaded
+to return the outputs as a tuple of floats (scalars need no broadcasting), so a kernel can
+index it.
 
 numba's on-disk cache goes to ``<base>/<key>``: ``base`` is ``NUMBA_CACHE_DIR`` if set, else
 ``.snakemake/numba-cache`` of the checkout (ignored by git, removed by ``make clean``), so no
@@ -54,7 +57,9 @@ if _BASE.name != _KEY:  # (a child process inherits the keyed directory)
     os.environ["NUMBA_CACHE_DIR"] = str(_BASE / _KEY)
 
 import numba  # noqa: E402  (after NUMBA_CACHE_DIR: numba reads it at import)
-from numba.extending import overload  # noqa: E402
+from llvmlite import ir  # noqa: E402
+from numba.core import types  # noqa: E402
+from numba.extending import intrinsic, overload  # noqa: E402
 
 from pipeline.generated import altimeter_attitude as gen  # noqa: E402
 
@@ -64,6 +69,7 @@ __all__ = [
     "euler_model_rhs",
     "euler_process_noise",
     "euler_state_jacobian",
+    "fma",
     "gamma_term_closed",
     "kernel",
     "njit",
@@ -79,6 +85,21 @@ def _broadcast_scalars(*outs):
     namespace: dict = {}
     exec(f"def impl(*outs):\n    return ({items})\n", namespace)
     return namespace["impl"]
+
+
+@intrinsic
+def fma(typingctx, a, b, c):
+    """a * b + c rounded once (LLVM's llvm.fma: the FMA instruction, or libm's fma where
+    there is none), for float64 arguments: how OpenBLAS's dgemm, hence numpy's ``@`` on
+    float64 matrices, accumulates its products."""
+    sig = types.float64(types.float64, types.float64, types.float64)
+
+    def codegen(context, builder, signature, args):
+        d = ir.DoubleType()
+        fn = builder.module.declare_intrinsic("llvm.fma", [d], ir.FunctionType(d, [d, d, d]))
+        return builder.call(fn, args)
+
+    return sig, codegen
 
 
 def njit(fn):
@@ -126,12 +147,28 @@ def kernel(fn):
     return call
 
 
+import math as _math  # noqa: E402
+import types as _types  # noqa: E402
+
+_SCALAR_NP = _types.ModuleType("scalar_np")
+for _name, _fn in (
+    ("sin", _math.sin), ("cos", _math.cos), ("tan", _math.tan), ("sqrt", _math.sqrt),
+    ("arcsin", _math.asin), ("arctan2", _math.atan2),
+):  # fmt: skip
+    setattr(_SCALAR_NP, _name, _fn)
+
+
+def _scalar(fn):
+    """The generated function ``fn`` with ``np.sin`` etc. read from ``_SCALAR_NP``."""
+    return _types.FunctionType(fn.__code__, {**vars(gen), "np": _SCALAR_NP}, fn.__name__)
+
+
 # the generated functions the kernels call (scalar in, tuple of floats out)
-euler_model_rhs = njit(gen.euler_model_rhs)
-euler_process_noise = njit(gen.euler_process_noise)
-euler_state_jacobian = njit(gen.euler_state_jacobian)
-accel_third_row = njit(gen.accel_third_row)
-third_row_rotation = njit(gen.third_row_rotation)
-normalisation_error = njit(gen.normalisation_error)
-gamma_term_closed = njit(gen.gamma_term_closed)
-euler_jacobian_third_row = njit(gen.euler_jacobian_third_row)
+euler_model_rhs = njit(_scalar(gen.euler_model_rhs))
+euler_process_noise = njit(_scalar(gen.euler_process_noise))
+euler_state_jacobian = njit(_scalar(gen.euler_state_jacobian))
+accel_third_row = njit(_scalar(gen.accel_third_row))
+third_row_rotation = njit(_scalar(gen.third_row_rotation))
+normalisation_error = njit(_scalar(gen.normalisation_error))
+gamma_term_closed = njit(_scalar(gen.gamma_term_closed))
+euler_jacobian_third_row = njit(_scalar(gen.euler_jacobian_third_row))

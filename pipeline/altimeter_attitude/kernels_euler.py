@@ -33,31 +33,38 @@ __all__ = ["ukf_runs", "ekf_runs"]
 
 
 @jit.njit
-def _rk4(x, dt, w, f, g, out):
-    """One RK4 step of the Euler model (euler_filters.rk4_step) for one state x (4,)."""
-    k1 = jit.euler_model_rhs(x[0], x[1], x[2], x[3], w[0], w[1], w[2], f[0], f[1], f[2], g)
+def _rk4_point(X, j, dt, w0, w1, w2, f0, f1, f2, g, Xf):
+    """One RK4 step of the Euler model (euler_filters.rk4_step) of the state ``X[j]`` (4,)
+    into ``Xf[j]``, the IMU outputs held (as scalars); returns the stages' V_d rates (what
+    :func:`_rk4_shared` takes)."""
+    x0, x1, x2, x3 = X[j, 0], X[j, 1], X[j, 2], X[j, 3]
+    k1 = jit.euler_model_rhs(x0, x1, x2, x3, w0, w1, w2, f0, f1, f2, g)
     h = 0.5 * dt
     k2 = jit.euler_model_rhs(
-        x[0] + h * k1[0], x[1] + h * k1[1], x[2] + h * k1[2], x[3] + h * k1[3],
-        w[0], w[1], w[2], f[0], f[1], f[2], g,
+        x0 + h * k1[0], x1 + h * k1[1], x2 + h * k1[2], x3 + h * k1[3],
+        w0, w1, w2, f0, f1, f2, g,
     )  # fmt: skip
     k3 = jit.euler_model_rhs(
-        x[0] + h * k2[0], x[1] + h * k2[1], x[2] + h * k2[2], x[3] + h * k2[3],
-        w[0], w[1], w[2], f[0], f[1], f[2], g,
+        x0 + h * k2[0], x1 + h * k2[1], x2 + h * k2[2], x3 + h * k2[3],
+        w0, w1, w2, f0, f1, f2, g,
     )  # fmt: skip
     k4 = jit.euler_model_rhs(
-        x[0] + dt * k3[0], x[1] + dt * k3[1], x[2] + dt * k3[2], x[3] + dt * k3[3],
-        w[0], w[1], w[2], f[0], f[1], f[2], g,
+        x0 + dt * k3[0], x1 + dt * k3[1], x2 + dt * k3[2], x3 + dt * k3[3],
+        w0, w1, w2, f0, f1, f2, g,
     )  # fmt: skip
     c = dt / 6.0
-    for a in range(4):
-        out[a] = x[a] + c * (k1[a] + 2 * k2[a] + 2 * k3[a] + k4[a])
+    Xf[j, 0] = x0 + c * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+    Xf[j, 1] = x1 + c * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+    Xf[j, 2] = x2 + c * (k1[2] + 2 * k2[2] + 2 * k3[2] + k4[2])
+    Xf[j, 3] = x3 + c * (k1[3] + 2 * k2[3] + 2 * k3[3] + k4[3])
+    return k1[2], k2[2], k3[2], k4[2]
 
 
 @jit.njit
-def _process_noise(x, dt, gyro_var, accel_var, q_floor, Q):
-    """Q = dt^2 J Sigma J^T (generated euler_process_noise) + q_floor I, into Q (4, 4)."""
-    q = jit.euler_process_noise(x[0], x[1], dt, gyro_var, accel_var)
+def _process_noise(phi, theta, dt, gyro_var, accel_var, q_floor, Q):
+    """Q = dt^2 J Sigma J^T (generated euler_process_noise at roll ``phi`` and pitch
+    ``theta``) + q_floor I, into Q (4, 4)."""
+    q = jit.euler_process_noise(phi, theta, dt, gyro_var, accel_var)
     for a in range(4):
         for b in range(4):
             Q[a, b] = q[4 * a + b]
@@ -66,8 +73,9 @@ def _process_noise(x, dt, gyro_var, accel_var, q_floor, Q):
 
 @jit.njit
 def _cholesky(A, scale, L):
-    """Lower Cholesky factor of scale * A (4, 4) into L; False if not positive definite."""
-    n = A.shape[0]
+    """Lower Cholesky factor of scale * A (4, 4) into L; False if not positive definite (the
+    size a literal, so the compiled loops are unrolled)."""
+    n = 4
     for j in range(n):
         s = scale * A[j, j]
         for k in range(j):
@@ -89,7 +97,7 @@ def _cholesky(A, scale, L):
 @jit.njit
 def _sigma_points(x, P, scale, L, X):
     """X (2n+1, n) = [x, x + L[:, k], x - L[:, k]] (ukf.sigma_points); False if P is not PD."""
-    n = x.shape[0]
+    n = 4
     if not _cholesky(P, scale, L):
         return False
     for a in range(n):
@@ -102,7 +110,7 @@ def _sigma_points(x, P, scale, L, X):
 
 @jit.njit
 def _symmetrize(P):
-    n = P.shape[0]
+    n = 4
     for a in range(n):
         for b in range(a + 1, n):
             m = 0.5 * (P[a, b] + P[b, a])
@@ -112,11 +120,11 @@ def _symmetrize(P):
 
 @jit.njit
 def _rk4_shared(x2, x3, dt, k12, k22, k32, k42):
-    """V_d and h after the RK4 step of :func:`_rk4` for a state whose roll and pitch (bit for
+    """V_d and h after the RK4 step of :func:`_rk4_point` for a state whose roll and pitch (bit for
     bit) are those of a point already propagated: d[phi, theta, V_d]/dt depend on roll and
     pitch only and dh/dt = -V_d (euler_model_rhs; tests check it), so the stages' roll,
     pitch and V_d rates ``k12``..``k42`` are that point's and only the h rates are this
-    state's. The same operations as :func:`_rk4`, in the same order."""
+    state's. The same operations as :func:`_rk4_point`, in the same order."""
     h = 0.5 * dt
     c = dt / 6.0
     out2 = x2 + c * (k12 + 2 * k22 + 2 * k32 + k42)
@@ -152,7 +160,7 @@ def ukf_runs(gyro, accel, alt, x0, P0, wm, wc, scale, dt, g, gyro_var, accel_var
     P = np.empty((n, n))
     dz = np.empty(S)
     K = np.empty(n)
-    h = 0.5 * dt
+    centre = np.int64(0)  # (not a literal 0: the one specialisation of _rk4_point)
     for i in range(N):
         for a in range(n):
             x[a] = x0[i, a]
@@ -163,39 +171,19 @@ def ukf_runs(gyro, accel, alt, x0, P0, wm, wc, scale, dt, g, gyro_var, accel_var
         for k in range(T):
             w0, w1, w2 = gyro[i, k, 0], gyro[i, k, 1], gyro[i, k, 2]
             f0, f1, f2 = accel[i, k, 0], accel[i, k, 1], accel[i, k, 2]
-            _process_noise(x, dt, gyro_var, accel_var, q_floor, Q)
             if not _sigma_points(x, P, scale, L, X):
                 failed[i] = True
                 break
-            # the centre point, keeping its stages' rates for the points that share them
-            p0, p1, p2, p3 = X[0, 0], X[0, 1], X[0, 2], X[0, 3]
-            k1 = jit.euler_model_rhs(p0, p1, p2, p3, w0, w1, w2, f0, f1, f2, g)
-            k2 = jit.euler_model_rhs(
-                p0 + h * k1[0], p1 + h * k1[1], p2 + h * k1[2], p3 + h * k1[3],
-                w0, w1, w2, f0, f1, f2, g,
-            )  # fmt: skip
-            k3 = jit.euler_model_rhs(
-                p0 + h * k2[0], p1 + h * k2[1], p2 + h * k2[2], p3 + h * k2[3],
-                w0, w1, w2, f0, f1, f2, g,
-            )  # fmt: skip
-            k4 = jit.euler_model_rhs(
-                p0 + dt * k3[0], p1 + dt * k3[1], p2 + dt * k3[2], p3 + dt * k3[3],
-                w0, w1, w2, f0, f1, f2, g,
-            )  # fmt: skip
-            c6 = dt / 6.0
-            f_0 = p0 + c6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
-            f_1 = p1 + c6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
-            Xf[0, 0] = f_0
-            Xf[0, 1] = f_1
-            Xf[0, 2] = p2 + c6 * (k1[2] + 2 * k2[2] + 2 * k3[2] + k4[2])
-            Xf[0, 3] = p3 + c6 * (k1[3] + 2 * k2[3] + 2 * k3[3] + k4[3])
+            p0, p1 = X[0, 0], X[0, 1]  # the centre point: x, bit for bit
+            _process_noise(p0, p1, dt, gyro_var, accel_var, q_floor, Q)
+            # the centre point, keeping its stages' V_d rates for the points that share them
+            v1, v2, v3, v4 = _rk4_point(X, centre, dt, w0, w1, w2, f0, f1, f2, g, Xf)
+            f_0, f_1 = Xf[0, 0], Xf[0, 1]
             for j in range(1, S):
                 if _same_bits(X[j, 0], p0) and _same_bits(X[j, 1], p1):
                     Xf[j, 0] = f_0
                     Xf[j, 1] = f_1
-                    Xf[j, 2], Xf[j, 3] = _rk4_shared(
-                        X[j, 2], X[j, 3], dt, k1[2], k2[2], k3[2], k4[2]
-                    )
+                    Xf[j, 2], Xf[j, 3] = _rk4_shared(X[j, 2], X[j, 3], dt, v1, v2, v3, v4)
                 else:
                     _rk4_point(X, j, dt, w0, w1, w2, f0, f1, f2, g, Xf)
             for a in range(n):  # x^- = Wm X_f
@@ -242,31 +230,6 @@ def ukf_runs(gyro, accel, alt, x0, P0, wm, wc, scale, dt, g, gyro_var, accel_var
     return xs, var, failed
 
 
-@jit.njit
-def _rk4_point(X, j, dt, w0, w1, w2, f0, f1, f2, g, Xf):
-    """:func:`_rk4` of sigma point ``X[j]`` into ``Xf[j]`` (the inputs as scalars)."""
-    x0, x1, x2, x3 = X[j, 0], X[j, 1], X[j, 2], X[j, 3]
-    k1 = jit.euler_model_rhs(x0, x1, x2, x3, w0, w1, w2, f0, f1, f2, g)
-    h = 0.5 * dt
-    k2 = jit.euler_model_rhs(
-        x0 + h * k1[0], x1 + h * k1[1], x2 + h * k1[2], x3 + h * k1[3],
-        w0, w1, w2, f0, f1, f2, g,
-    )  # fmt: skip
-    k3 = jit.euler_model_rhs(
-        x0 + h * k2[0], x1 + h * k2[1], x2 + h * k2[2], x3 + h * k2[3],
-        w0, w1, w2, f0, f1, f2, g,
-    )  # fmt: skip
-    k4 = jit.euler_model_rhs(
-        x0 + dt * k3[0], x1 + dt * k3[1], x2 + dt * k3[2], x3 + dt * k3[3],
-        w0, w1, w2, f0, f1, f2, g,
-    )  # fmt: skip
-    c = dt / 6.0
-    Xf[j, 0] = x0 + c * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
-    Xf[j, 1] = x1 + c * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
-    Xf[j, 2] = x2 + c * (k1[2] + 2 * k2[2] + 2 * k3[2] + k4[2])
-    Xf[j, 3] = x3 + c * (k1[3] + 2 * k2[3] + 2 * k3[3] + k4[3])
-
-
 @jit.kernel
 def ekf_runs(gyro, accel, alt, x0, P0, dt, g, gyro_var, accel_var, R, q_floor):
     """The EKF over runs (N, T): (states (N, T+1, 4), roll/pitch variances (N, T+1, 2))."""
@@ -278,8 +241,9 @@ def ekf_runs(gyro, accel, alt, x0, P0, dt, g, gyro_var, accel_var, R, q_floor):
     F = np.empty((n, n))
     FP = np.empty((n, n))
     M = np.empty((n, n))
-    x = np.empty(n)
-    xn = np.empty(n)
+    xx = np.empty((1, n))  # the state, a row for _rk4_point
+    xn = np.empty((1, n))
+    x = xx[0]
     P = np.empty((n, n))
     K = np.empty(n)
     for i in range(N):
@@ -290,15 +254,16 @@ def ekf_runs(gyro, accel, alt, x0, P0, dt, g, gyro_var, accel_var, R, q_floor):
                 P[a, b] = P0[i, a, b]
         var[i, 0, 0], var[i, 0, 1] = P[0, 0], P[1, 1]
         for k in range(T):
-            w, f = gyro[i, k], accel[i, k]
-            _process_noise(x, dt, gyro_var, accel_var, q_floor, Q)
-            J = jit.euler_state_jacobian(x[0], x[1], w[0], w[1], w[2], f[0], f[1], f[2])
+            w0, w1, w2 = gyro[i, k, 0], gyro[i, k, 1], gyro[i, k, 2]
+            f0, f1, f2 = accel[i, k, 0], accel[i, k, 1], accel[i, k, 2]
+            _process_noise(x[0], x[1], dt, gyro_var, accel_var, q_floor, Q)
+            J = jit.euler_state_jacobian(x[0], x[1], w0, w1, w2, f0, f1, f2)
             for a in range(n):
                 for b in range(n):
                     F[a, b] = (1.0 if a == b else 0.0) + dt * J[4 * a + b]
-            _rk4(x, dt, w, f, g, xn)
+            _rk4_point(xx, np.int64(0), dt, w0, w1, w2, f0, f1, f2, g, xn)
             for a in range(n):
-                x[a] = xn[a]
+                x[a] = xn[0, a]
             for a in range(n):  # P = F P F^T + Q
                 for b in range(n):
                     s = 0.0

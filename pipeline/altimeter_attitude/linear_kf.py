@@ -26,6 +26,8 @@ from pipeline.generated import altimeter_attitude as gen
 
 __all__ = ["VARIANTS", "initial_state", "run_linear_kf"]
 
+CHUNK_TOL = 1e-17  # model.ChunkDiscretisation's default tol: where its series stop
+
 RADIAL_SIGMA = 1e-6  # p0_radial = "none": sigma of c along itself in P0, dimensionless
 P0_RADIAL = ("second_order", "none")
 
@@ -101,9 +103,9 @@ def run_linear_kf(
     xs = np.empty((T + 1, N, 5))  # time-major while filling (contiguous writes)
     var = np.empty((T + 1, N, 2))  # roll/pitch variances J P_cc J^T (diagonal)
 
-    def euler_var(x, P):
-        cov = model.euler_cov_from_third_row(x[:, :3], P[:, :3, :3])
-        return np.stack([cov[:, 0, 0], cov[:, 1, 1]], -1)
+    def euler_var(x, P):  # x (..., 5), P (..., 5, 5): every leading axis at once
+        cov = model.euler_cov_from_third_row(x[..., :3], P[..., :3, :3])
+        return np.stack([cov[..., 0, 0], cov[..., 1, 1]], -1)
 
     xs[0], var[0] = x, euler_var(x, P)
     L = model.input_vector(dt, input_matrix)
@@ -118,6 +120,7 @@ def run_linear_kf(
         accel = np.tile(inputs.accel[:, c0:c1], (V, 1, 1))
         # eq. 26 at gamma = 0 for the whole chunk; k gamma enters per step (eq. 30)
         disc = model.ChunkDiscretisation(*model.a_blocks(gyro, accel), dt)
+        p_c = np.empty((c1 - c0, N, 5, 5))  # the chunk's P, for its variances in one pass
         for j, step in enumerate(range(c0, c1)):
             gamma = model.normalisation_error(x[:, :3])  # at xhat_{k-1|k-1}
             F = disc.transition(j, k * gamma)
@@ -136,7 +139,8 @@ def run_linear_kf(
                 P = P - K[:, :, None] * P[:, None, 4, :]  # (I - K H) P
             P = 0.5 * (P + np.swapaxes(P, -1, -2))
             xs[step + 1] = x
-            var[step + 1] = euler_var(x, P)
+            p_c[j] = P
+        var[c0 + 1 : c1 + 1] = euler_var(xs[c0 + 1 : c1 + 1], p_c)
     if done:
         c, var = done  # run-major already
     else:
@@ -179,17 +183,19 @@ def _compiled_loop(
     vertical = np.asarray(model.gen.vertical_transition(dt), dtype=float).reshape(2, 2)
     gc = np.ascontiguousarray(model.GAMMA_COLUMNS)
     alt = np.ascontiguousarray(inputs.altimeter)
+    gyro = np.ascontiguousarray(inputs.gyro, dtype=float)
+    accel = np.ascontiguousarray(inputs.accel, dtype=float)
+    basis = np.ascontiguousarray(model._INPUT_BASIS)
+    coef = model.series_coefficients(dt)
+    gamma, update = use_gamma.astype(bool), np.asarray(use_update, dtype=bool)
     for c0 in range(0, T, chunk):
-        c1 = min(T, c0 + chunk)
-        disc = model.ChunkDiscretisation(
-            *model.a_blocks(inputs.gyro[:, c0:c1], inputs.accel[:, c0:c1]), dt
-        )
-        ok = kernels_c.linear_kf_chunk(
-            x, P, np.ascontiguousarray(disc.exp_w), np.stack(disc.f_psi), np.stack(disc.f_xi),
-            vertical, float(model.A_CONSTANT[4, 3]), np.asarray(L, dtype=float), g, float(k), dt,
-            gc, q_diag, R, alt, use_gamma.astype(bool), np.asarray(use_update, dtype=bool),
-            model.ChunkDiscretisation.A_DT_MAX, c0, cs, var,
+        status, theta_max = kernels_c.linear_kf_chunk(
+            x, P, gyro, accel, c0, min(T, c0 + chunk), basis, coef, CHUNK_TOL, vertical,
+            float(model.A_CONSTANT[4, 3]), np.asarray(L, dtype=float), g, float(k), dt, gc,
+            q_diag, R, alt, gamma, update, model.ChunkDiscretisation.A_DT_MAX, cs, var,
         )  # fmt: skip
-        if not ok:
+        if status == 2:
+            model.ChunkDiscretisation.check_rotation(theta_max)
+        if status:
             return None
     return cs, var

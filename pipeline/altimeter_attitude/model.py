@@ -31,6 +31,8 @@ __all__ = [
     "gamma_kron_term",
     "gamma_term_closed",
     "ChunkDiscretisation",
+    "SERIES_ORDER_MAX",
+    "series_coefficients",
     "input_vector",
     "third_row_cov_from_euler",
     "euler_cov_from_third_row",
@@ -222,6 +224,27 @@ def gamma_term_closed(P: np.ndarray, gyro_var: float, accel_var: float, dt: floa
     return out
 
 
+SERIES_ORDER_MAX = 40  # ChunkDiscretisation: the longest series in (W dt)
+
+
+def series_coefficients(dt: float) -> np.ndarray:
+    """The coefficients c_i of the series sum_i c_i (W dt)^i of :class:`ChunkDiscretisation`,
+    rows exp(W dt), Psi_0..2, Xi_0..2 (7, SERIES_ORDER_MAX + 1): 1/i!,
+    dt^(j+1) / (i! (i+j+1)) and dt^(j+2) / i! (1/(i+j+1) - 1/(i+j+2)).
+
+    >>> series_coefficients(0.5)[:, 0].tolist()
+    [1.0, 0.5, 0.125, 0.041666666666666664, 0.125, 0.020833333333333336, 0.005208333333333332]
+    """
+    out = np.empty((7, SERIES_ORDER_MAX + 1))
+    for i in range(SERIES_ORDER_MAX + 1):
+        inv_fact = 1.0 / math.factorial(i)
+        out[0, i] = inv_fact
+        for j in range(3):
+            out[1 + j, i] = inv_fact * dt ** (j + 1) / (i + j + 1)
+            out[4 + j, i] = inv_fact * dt ** (j + 2) * (1.0 / (i + j + 1) - 1.0 / (i + j + 2))
+    return out
+
+
 class ChunkDiscretisation:
     """F of eq. 30 for a run of steps, with the gamma-free part computed for all steps at once.
 
@@ -256,14 +279,10 @@ class ChunkDiscretisation:
         # A2 (W dt)^2, since (W dt)^3 = -theta^2 W dt with theta = |omega| dt (Rodrigues)
         theta2 = -0.5 * np.trace(w2, axis1=-2, axis2=-1)
         theta_max = float(np.sqrt(theta2.max(initial=0.0)))
-        if theta_max > 0.5:
-            raise ValueError(
-                f"rotation per step |omega| dt = {theta_max:.3g} rad: must be <= 0.5 "
-                "(the series below are summed term by term)"
-            )
+        self.check_rotation(theta_max)
         # order: first i with theta^(i+1) / (i+1)! < tol (the coefficients below are <= 1/i!)
         order, term = 2, theta_max**3 / 6.0
-        while term > tol and order < 40:
+        while term > tol and order < SERIES_ORDER_MAX:
             order += 1
             term *= theta_max / (order + 1)
         powers = [np.ones_like(theta2)]
@@ -282,24 +301,19 @@ class ChunkDiscretisation:
         def apply_f(c0, a1, a2):  # f^T (c0 I + a1 W dt + a2 (W dt)^2)
             return c0 * f + a1[..., None] * fw + a2[..., None] * fw2
 
-        inv_fact = [1.0 / math.factorial(i) for i in range(order + 1)]
-        c0, a1, a2 = collapse(lambda i: inv_fact[i])
+        coef = series_coefficients(dt)  # rows: exp, Psi_0..2, Xi_0..2
+        c0, a1, a2 = collapse(lambda i: coef[0, i])
         self.exp_w = c0 * np.eye(3) + a1[..., None, None] * w + a2[..., None, None] * w2
-        self.f_psi, self.f_xi = [], []
-        for j in range(3):
-            # Psi_j = sum_i (W dt)^i dt^(j+1) / (i! (i+j+1))
-            self.f_psi.append(
-                apply_f(*collapse(lambda i, j=j: inv_fact[i] * dt ** (j + 1) / (i + j + 1)))
-            )
-            # Xi_j = sum_i (W dt)^i dt^(j+2) / i! (1/(i+j+1) - 1/(i+j+2))
-            self.f_xi.append(
-                apply_f(
-                    *collapse(
-                        lambda i, j=j: (
-                            inv_fact[i] * dt ** (j + 2) * (1.0 / (i + j + 1) - 1.0 / (i + j + 2))
-                        )
-                    )
-                )
+        self.f_psi = [apply_f(*collapse(lambda i, j=j: coef[1 + j, i])) for j in range(3)]
+        self.f_xi = [apply_f(*collapse(lambda i, j=j: coef[4 + j, i])) for j in range(3)]
+
+    @staticmethod
+    def check_rotation(theta_max: float) -> None:
+        """ValueError if the largest rotation per step exceeds 0.5 rad."""
+        if theta_max > 0.5:
+            raise ValueError(
+                f"rotation per step |omega| dt = {theta_max:.3g} rad: must be <= 0.5 "
+                "(the series below are summed term by term)"
             )
 
     def transition(self, j: int, a: np.ndarray) -> np.ndarray:

@@ -79,7 +79,9 @@ def run_tuning(
                 "n_runs": n,
             }
             try:
-                est = euler_filters.run_ukf(both, float(alpha), sc.ukf_beta, float(kappa))
+                est = euler_filters.run_ukf(
+                    both, float(alpha), sc.ukf_beta, float(kappa), third_row=False
+                )
             except NotPositiveDefiniteError as err:
                 row["status"] = f"covariance not positive definite ({err.where})"
                 rows.append(row)

@@ -197,3 +197,56 @@ def test_kernel_first_call_holds_the_compile_lock(tmp_path, monkeypatch):
     worker.join(60)
     assert calls == [2.0]
     assert disp.dispatcher.signatures and disp(2.0) == 3.0
+
+
+def test_ukf_without_third_row_gives_the_same_angles(short):
+    """run_ukf(third_row=False) (the UKF tuning's form): the same roll, pitch and sigmas bit
+    for bit, c left NaN instead of computed."""
+    sc, inp = short
+    args = (sc.ukf_alpha, sc.ukf_beta, sc.ukf_kappa)
+    full = euler_filters.run_ukf(inp, *args)
+    lean = euler_filters.run_ukf(inp, *args, third_row=False)
+    for f in ("roll", "pitch", "roll_sigma", "pitch_sigma", "norm_error"):
+        np.testing.assert_array_equal(getattr(lean, f), getattr(full, f), err_msg=f)
+    assert lean.c.shape == full.c.shape and np.isnan(lean.c).all()
+    assert np.isfinite(full.c).all()
+
+
+def test_linear_kf_chunk_terms_are_chunk_discretisation_bit_for_bit(short):
+    """The linear-KF kernel's own F terms (kernels_c.chunk_terms, chunk_order) are
+    ChunkDiscretisation's numpy arrays bit for bit, signed zeros included (a stationary
+    gyro), wherever numpy's ``w @ w`` is fused multiply-adds in k order (OpenBLAS's dgemm);
+    with another BLAS, to round-off."""
+    from pipeline.altimeter_attitude import kernels_c
+
+    sc, inp = short
+    gyro, accel = inp.gyro.copy(), inp.accel.copy()
+    c0, c1, dt = 100, 356, inp.dt
+    gyro[0, c0] = [0.0, -0.0, 0.0]
+    gyro[1, c0 + 1] = [-0.0, -0.0, -0.0]
+    disc = model.ChunkDiscretisation(*model.a_blocks(gyro[:, c0:c1], accel[:, c0:c1]), dt)
+    basis, coef = np.ascontiguousarray(model._INPUT_BASIS), model.series_coefficients(dt)
+    w, w2, v, pw, terms = (np.empty(shape) for shape in ((3, 3), (3, 3), (3, 3), 22, (3, 3, 3)))
+    order, theta_max = kernels_c.chunk_order(
+        gyro, accel, c0, c1, basis, coef, dt, linear_kf.CHUNK_TOL, w, w2, v, pw, terms
+    )
+    theta2 = -0.5 * np.trace(disc.w_block * dt @ (disc.w_block * dt), axis1=-2, axis2=-1)
+    assert theta_max == float(np.sqrt(theta2.max(initial=0.0))) and 2 < order < 40
+    fma_blas = True
+    for i in range(inp.n_runs):
+        for j, step in enumerate(range(c0, c1)):
+            t2 = kernels_c.chunk_terms(
+                gyro, accel, i, step, basis, coef, order, dt, w, w2, v, pw, terms
+            )
+            fma_blas &= np.array_equal(w @ w, w2)
+            got = terms.ravel()
+            want = np.concatenate(
+                [disc.exp_w[i, j].ravel()]
+                + [disc.f_psi[q][i, j] for q in range(3)]
+                + [disc.f_xi[q][i, j] for q in range(3)]
+            )
+            if fma_blas:
+                assert t2 == theta2[i, j]
+                assert np.array_equal(got.view(np.int64), want.view(np.int64)), (i, step)
+            else:
+                np.testing.assert_allclose(got, want, rtol=1e-14, atol=1e-18)
