@@ -172,9 +172,13 @@ def edited(root: Path, edits: tuple[Edit, ...]) -> Iterator[None]:
                 p.write_bytes(data)
 
 
-def state(top: Path, skip: tuple[str, ...] = (".snakemake",)) -> dict[str, tuple[int, int]]:
+def state(
+    top: Path, skip: tuple[str, ...] = (".snakemake", "__pycache__")
+) -> dict[str, tuple[int, int]]:
     """(size, mtime) of every file under ``top`` (paths relative to it), directories under a
-    name in ``skip`` (Snakemake's own bookkeeping) left out."""
+    name in ``skip`` left out: Snakemake's own bookkeeping, and Python's bytecode caches, which
+    the parse writes when bytecode writing is on (PYTHONDONTWRITEBYTECODE unset, as on a user's
+    machine): a cache of the code, not an output."""
     out = {}
     for dirpath, dirnames, filenames in os.walk(top):
         dirnames[:] = [d for d in dirnames if d not in skip]

@@ -51,6 +51,10 @@ ALLOWED: dict[tuple[str, str, str], str] = {
     ("pipeline/north_finding/cli.py", "_parser", "earth_rate_literal"): (
         "the default of the --omega-ie command-line parameter: a value, not a formula"
     ),
+    ("pipeline/platform_drift/trajectory.py", "_axes", "cos_sin_array"): (
+        "returns the NWU axes (from the generated frames) with cos and sin of the latitude, "
+        "computed once per call of the right-hand side: a tuple of values, not a rotation matrix"
+    ),
 }
 
 _TRIG = {"cos", "sin"}
