@@ -236,34 +236,6 @@ def measure_full_run(root: Path, work: Path, cores: int = CORES) -> FullRun:
     )
 
 
-def slurm_probe_s(timeout_s: float = 15.0) -> float | None:
-    """Wall seconds of ``scontrol show config`` (None: no SLURM client). Snakemake's SLURM
-    executor plugin runs it when it is imported (for a help text, with a 10 s time-out), that is
-    at every Snakemake start, local runs included: a SLURM client whose controller does not
-    answer makes each start wait for it, idle (no CPU)."""
-    scontrol = shutil.which("scontrol")
-    if scontrol is None:
-        return None
-    start = time.monotonic()
-    try:
-        subprocess.run(
-            [scontrol, "show", "config"], capture_output=True, timeout=timeout_s, check=False
-        )
-    except subprocess.TimeoutExpired:
-        pass
-    return time.monotonic() - start
-
-
-def _print_slurm_probe(probe: float | None) -> None:
-    if probe is not None and probe >= 1.0:
-        print(
-            f"          note: `scontrol show config` took {probe:.1f} s here (a SLURM client "
-            "whose controller does not answer); Snakemake's SLURM plugin waits up to 10 s for "
-            "it at each start (two in a full run: workflow and report), idle: the wall time "
-            "above includes that wait"
-        )
-
-
 def _full_run_report(args: argparse.Namespace) -> int:
     with tempfile.TemporaryDirectory(prefix="bench-workflow-") as tmp:
         print("full run from nothing (a copy of this checkout, make workflow, 2 cores) ...")
@@ -284,7 +256,6 @@ def _full_run_report(args: argparse.Namespace) -> int:
             f"CPU; load average {run.load_before:.2f} before, {run.load_after:.2f} after "
             "(the wall time holds for an idle machine only)"
         )
-        _print_slurm_probe(slurm_probe_s())
         if args.noop_repeat:
             _print_noop(measure_noop(run.copy, args.noop_repeat, (Path.cwd() / ".venv").resolve()))
     return 0

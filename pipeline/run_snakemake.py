@@ -17,6 +17,16 @@ scheduled later than before. Upstream: snakemake/snakemake pull request 3744 (th
 often under the rate limiter). The fix is applied only to the Snakemake version it was written
 for (:data:`PATCHED_VERSION`); any other version runs unchanged.
 
+A second change, for local runs only: Snakemake imports every installed executor plugin at start
+to register its options, and the SLURM plugin (in environment.lock for ``make reproduce-slurm``)
+runs ``scontrol show config`` at import, with a 10 s time-out, to word a help text. On a machine
+with a SLURM client whose controller does not answer, every Snakemake start waited ~9-10 s for
+it, idle (two starts in a full ``make reproduce``: the workflow and its report; ~0.6 CPU-s each
+otherwise). :func:`local_run` tells from the command line that no cluster executor can be in
+play (no ``--executor``, no profile given or found); then :func:`skip_executor_plugins` leaves
+the SLURM plugins out of Snakemake's plugin registry. A run with a profile or an executor
+(``make reproduce-slurm``) loads every plugin as before.
+
 >>> import snakemake
 >>> snakemake.__version__ == PATCHED_VERSION
 True
@@ -24,13 +34,32 @@ True
 
 from __future__ import annotations
 
+import os
+import pkgutil
 import sys
 import threading
+from collections.abc import Iterable, Mapping
+from pathlib import Path
 
-__all__ = ["PATCHED_VERSION", "one_pending_reevaluation", "main"]
+__all__ = [
+    "PATCHED_VERSION",
+    "CLUSTER_PLUGINS",
+    "one_pending_reevaluation",
+    "local_run",
+    "skip_executor_plugins",
+    "main",
+]
 
 #: the Snakemake release whose scheduler loop :func:`one_pending_reevaluation` replaces a part of
 PATCHED_VERSION = "9.27.1"
+
+#: executor plugin modules a local run does not import (the SLURM one queries the cluster at import)
+CLUSTER_PLUGINS = frozenset(
+    {"snakemake_executor_plugin_slurm", "snakemake_executor_plugin_slurm_jobstep"}
+)
+
+# Snakemake's options that choose an executor or a profile (which may choose one)
+_EXECUTOR_OPTIONS = ("--executor", "--profile", "--workflow-profile")
 
 
 def one_pending_reevaluation(scheduler_class: type) -> bool:
@@ -73,16 +102,92 @@ def one_pending_reevaluation(scheduler_class: type) -> bool:
     return True
 
 
+def local_run(argv: Iterable[str], environ: Mapping[str, str], cwd: Path) -> bool:
+    """Whether a Snakemake command line runs its jobs here for certain: no executor chosen
+    (``--executor``/``-e``), no profile given (``--profile``, ``$SNAKEMAKE_PROFILE``,
+    ``--workflow-profile`` other than ``none``) and no default workflow profile Snakemake would
+    pick up (``profiles/default`` or ``default`` in ``cwd``). Any doubt answers False.
+
+    >>> local_run(["--cores", "2", "--report", "r.html"], {}, Path("/nonexistent"))
+    True
+    >>> local_run(["--profile", "profiles/slurm"], {}, Path("/nonexistent"))
+    False
+    >>> local_run(["-e", "slurm"], {}, Path("/nonexistent")), local_run(["-npe", "x"], {}, Path("/"))
+    (False, False)
+    >>> local_run(["--workflow-profile", "none"], {}, Path("/nonexistent"))
+    True
+    >>> local_run([], {"SNAKEMAKE_PROFILE": "p"}, Path("/nonexistent"))
+    False
+    """
+    args = list(argv)
+    for i, arg in enumerate(args):
+        name = arg.split("=", 1)[0]
+        if name in _EXECUTOR_OPTIONS or any(
+            option.startswith(name) and len(name) > 3 for option in _EXECUTOR_OPTIONS
+        ):
+            value = arg.split("=", 1)[1] if "=" in arg else next(iter(args[i + 1 :]), "")
+            if not (name.startswith("--w") and value == "none"):
+                return False
+        elif arg.startswith("-") and not arg.startswith("--") and "e" in arg[1:]:
+            return False
+    if environ.get("SNAKEMAKE_PROFILE"):
+        return False
+    return not any((cwd / place).exists() for place in ("profiles/default", "default"))
+
+
+def skip_executor_plugins(registry_class: type, skipped: frozenset[str]) -> bool:
+    """Make ``registry_class.collect_plugins`` (Snakemake's executor plugin registry) run as
+    before but blind to the installed modules named in ``skipped``: while it runs,
+    ``pkgutil.iter_modules`` (where it finds the installed plugins) leaves them out, so they are
+    not imported. Returns whether the class was patched (False: it has no such method).
+
+    >>> class Registry:
+    ...     def collect_plugins(self):
+    ...         self.found = {m.name for m in pkgutil.iter_modules()} & {"pkgutil", "doctest"}
+    >>> skip_executor_plugins(Registry, frozenset({"doctest"}))
+    True
+    >>> registry = Registry(); registry.collect_plugins(); registry.found
+    {'pkgutil'}
+    >>> "doctest" in {m.name for m in pkgutil.iter_modules()}
+    True
+    """
+    collect = getattr(registry_class, "collect_plugins", None)
+    if not callable(collect):
+        return False
+
+    def collect_plugins(self) -> None:
+        iter_modules = pkgutil.iter_modules
+
+        def iter_kept(path=None, prefix=""):
+            return (info for info in iter_modules(path, prefix) if info.name not in skipped)
+
+        pkgutil.iter_modules = iter_kept
+        try:
+            collect(self)
+        finally:
+            pkgutil.iter_modules = iter_modules
+
+    registry_class.collect_plugins = collect_plugins
+    return True
+
+
 def main(argv: list[str] | None = None) -> None:
     """Run Snakemake's command line with ``argv`` (default: this process's arguments)."""
     import snakemake
-    from snakemake.cli import main as snakemake_main
 
+    args = sys.argv[1:] if argv is None else argv
     if snakemake.__version__ == PATCHED_VERSION:
+        # before anything instantiates the registry (importing the scheduler does)
+        from snakemake_interface_executor_plugins.registry import ExecutorPluginRegistry
+
+        if local_run(args, os.environ, Path.cwd()):
+            skip_executor_plugins(ExecutorPluginRegistry, CLUSTER_PLUGINS)
         from snakemake.scheduling.job_scheduler import JobScheduler
 
         one_pending_reevaluation(JobScheduler)
-    snakemake_main(sys.argv[1:] if argv is None else argv)
+    from snakemake.cli import main as snakemake_main
+
+    snakemake_main(args)
 
 
 if __name__ == "__main__":

@@ -81,3 +81,42 @@ def test_runs_a_workflow_and_reports_failure(tmp_path: Path) -> None:
     failed = _run(tmp_path)
     assert failed.returncode == 1
     assert "Error in rule bad" in failed.stderr
+
+
+def test_local_runs_leave_the_slurm_plugin_out(tmp_path: Path) -> None:
+    """A run with no executor and no profile does not import the SLURM plugin (its import runs
+    `scontrol show config`, which waits up to 10 s for an unanswering controller); a run with a
+    profile imports every installed plugin, as Snakemake does."""
+    (tmp_path / "Snakefile").write_text(
+        "import sys\n"
+        "print('SLURM_PLUGIN', 'snakemake_executor_plugin_slurm' in sys.modules)\n"
+        "rule all:\n"
+        "    output: 'x.txt'\n"
+        "    shell: 'echo x > {output}'\n"
+    )
+    local = _run(tmp_path, "--dry-run")
+    assert local.returncode == 0, local.stderr
+    assert "SLURM_PLUGIN False" in local.stdout + local.stderr
+    (tmp_path / "profile").mkdir()
+    (tmp_path / "profile" / "config.yaml").write_text("printshellcmds: true\n")
+    profiled = _run(tmp_path, "--dry-run", "--profile", "profile")
+    assert profiled.returncode == 0, profiled.stderr
+    assert "SLURM_PLUGIN True" in profiled.stdout + profiled.stderr
+
+
+def test_local_run_doubts_answer_false(tmp_path: Path) -> None:
+    """Every way Snakemake can be told to use an executor or a profile keeps the plugins."""
+    for argv in (
+        ["--executor", "slurm"],
+        ["--executor=slurm"],
+        ["--exec", "slurm"],
+        ["-e", "slurm"],
+        ["-eslurm"],
+        ["--profile=p"],
+        ["--workflow-profile", "p"],
+    ):
+        assert not run_snakemake.local_run(argv, {}, tmp_path), argv
+    assert not run_snakemake.local_run([], {"SNAKEMAKE_PROFILE": "p"}, tmp_path)
+    assert run_snakemake.local_run(["--cores", "2", "-n", "-p"], {}, tmp_path)
+    (tmp_path / "profiles" / "default").mkdir(parents=True)
+    assert not run_snakemake.local_run(["--cores", "2"], {}, tmp_path)

@@ -184,19 +184,3 @@ def test_full_run_reports_make_failure(tmp_path: Path, monkeypatch, capsys) -> N
     assert bench_workflow.main(["--full-run", "--noop-repeat", "0"]) == 1
     out = capsys.readouterr().out
     assert "make workflow failed in the copy (status 2)" in out
-
-
-def test_slurm_probe(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys) -> None:
-    """No SLURM client: nothing to report; a slow one (a fake scontrol that sleeps) is timed and
-    reported, a fast one is not."""
-    monkeypatch.setenv("PATH", str(tmp_path))
-    assert bench_workflow.slurm_probe_s() is None
-    fake = tmp_path / "scontrol"
-    fake.write_text(f"#!{sys.executable}\nimport time\ntime.sleep(1.2)\n")
-    fake.chmod(0o755)
-    probe = bench_workflow.slurm_probe_s()
-    assert probe is not None and probe >= 1.2
-    bench_workflow._print_slurm_probe(probe)
-    assert "scontrol show config` took" in capsys.readouterr().out
-    bench_workflow._print_slurm_probe(0.01)
-    assert capsys.readouterr().out == ""
