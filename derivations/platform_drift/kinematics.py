@@ -106,7 +106,7 @@ def plumb_deflection(
     w = earth_rate_mN(omega_e, lat)
     r_vec = sp.Matrix([0, 0, R])
     plumb_up = -(sp.Matrix([0, 0, -g]) - w.cross(w.cross(r_vec)))
-    plumb_up = sp.expand(sp.expand_trig(sp.simplify(plumb_up)))
+    plumb_up = sp.expand(sp.expand_trig(plumb_up))  # (simplify first gave the same)
     assert plumb_up[1] == 0
     return sp.atan2(plumb_up[0], plumb_up[2])
 
