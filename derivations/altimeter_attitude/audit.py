@@ -24,7 +24,7 @@ printed closed-form terms. The pipeline always uses the derived form.
 
 from __future__ import annotations
 
-import pandas as pd
+from typing import TYPE_CHECKING
 
 from derivations.altimeter_attitude import (
     audit_appendix,
@@ -36,6 +36,9 @@ from derivations.checks import AuditRow, Check, audit_main, run_audit
 from derivations.checks import audit_frame as checks_audit_frame
 
 __all__ = ["checks", "audit_rows", "audit_frame", "main"]
+
+if TYPE_CHECKING:  # pandas only for the annotations: a derive job need not import it
+    import pandas as pd
 
 
 def checks() -> list[Check]:

@@ -86,7 +86,9 @@ def _plain(expr):
     reps = rate_symbols()
     derivs = {k: v for k, v in reps.items() if isinstance(k, sp.Derivative)}
     funcs = {k: v for k, v in reps.items() if not isinstance(k, sp.Derivative)}
-    return expr.subs(derivs).subs(funcs)
+    # xreplace: exact replacement of these atoms, what subs gave here without its search for
+    # patterns (on the long unsimplified rates of angular_velocity_addition, most of the time)
+    return expr.xreplace(derivs).xreplace(funcs)
 
 
 def body_rate_from_euler() -> sp.Matrix:
@@ -314,6 +316,6 @@ def angular_velocity_addition() -> tuple[sp.Matrix, sp.Matrix]:
     reps = {lat_f.diff(s.t): lat_dot, lon_f.diff(s.t): lon_dot}
 
     def plain(m):
-        return _plain(m.subs(reps).subs({lat_f: lat_s, lon_f: lon_s}))
+        return _plain(m.xreplace(reps).xreplace({lat_f: lat_s, lon_f: lon_s}))
 
     return plain(w_ib), plain(w_ie + w_en + w_nb)

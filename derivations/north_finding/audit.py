@@ -14,7 +14,7 @@ of :mod:`derivations.discrepancies` (``pipeline.columns.DIFFERS_KINDS``). The pi
 
 from __future__ import annotations
 
-import pandas as pd
+from typing import TYPE_CHECKING
 
 from derivations.checks import AuditRow, Check, audit_main, run_audit
 from derivations.checks import audit_frame as checks_audit_frame
@@ -26,6 +26,9 @@ from derivations.north_finding import (
 )
 
 __all__ = ["checks", "audit_rows", "audit_frame", "main"]
+
+if TYPE_CHECKING:  # pandas only for the annotations: a derive job need not import it
+    import pandas as pd
 
 
 def checks() -> list[Check]:

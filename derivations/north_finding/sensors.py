@@ -53,6 +53,7 @@ from derivations.north_finding.symbols import (
     w,
     w_dot,
 )
+from derivations.trig import pythagorean_reduce
 
 __all__ = [
     "mat_bt",
@@ -110,9 +111,11 @@ def _table_kinematics() -> tuple[sp.Matrix, sp.Matrix]:
     v_t = r_t.diff(t)
     a_t = v_t.diff(t)
     subs = {tau_t.diff(t, 2): w_dot, tau_t.diff(t): w}
-    v_b = sp.simplify((mat_bt(tau_t) * v_t).subs(subs)).subs(tau_t, tau)
-    a_b = sp.simplify((mat_bt(tau_t) * a_t).subs(subs)).subs(tau_t, tau)
-    return v_b, a_b
+    # sin^2 = 1 - cos^2 (exact, derivations.trig) leaves [0, l omega, 0] and
+    # [-l omega^2, l omega_dot, 0], as simplify did (immutable, as simplify returned them)
+    v_b = (mat_bt(tau_t) * v_t).subs(subs).applyfunc(pythagorean_reduce)
+    a_b = (mat_bt(tau_t) * a_t).subs(subs).applyfunc(pythagorean_reduce)
+    return sp.ImmutableMatrix(v_b.subs(tau_t, tau)), sp.ImmutableMatrix(a_b.subs(tau_t, tau))
 
 
 @derivation

@@ -16,7 +16,7 @@ says in which small quantities. The pipeline always uses the derived form.
 
 from __future__ import annotations
 
-import pandas as pd
+from typing import TYPE_CHECKING
 
 from derivations.checks import AuditRow, Check, audit_main, run_audit
 from derivations.checks import audit_frame as checks_audit_frame
@@ -28,6 +28,9 @@ from derivations.platform_drift import (
 )
 
 __all__ = ["checks", "audit_rows", "audit_frame", "main"]
+
+if TYPE_CHECKING:  # pandas only for the annotations: a derive job need not import it
+    import pandas as pd
 
 
 def checks() -> list[Check]:

@@ -184,6 +184,19 @@ def test_pi_loop_in_time_has_the_step_responses_of_eq18():
     assert abs(sim.y[0][-1]) < 1e-2  # eq. 19: the gyro solution is washed out
 
 
+@pytest.mark.parametrize("xi", [1 / np.sqrt(2), 1.0, 0.3, 1.5])
+def test_step_overshoot_closed_form_is_scipys_step_response(xi):
+    """complementary.step_overshoot (the audit's note on eq. 21) takes the closed-form step
+    responses; SciPy's signal.step of the same two systems gives the same peaks."""
+    t = np.linspace(0.0, 30.0, 30001)
+    kp = 2 * xi
+    y_pi = signal.step(signal.lti([kp, 1.0], [1.0, kp, 1.0]), T=t)[1]
+    y_2 = signal.step(signal.lti([1.0], [1.0, kp, 1.0]), T=t)[1]
+    got = cf.step_overshoot(xi)
+    assert got["pi_loop_overshoot_pct"] == pytest.approx(100 * (y_pi.max() - 1.0), abs=1e-9)
+    assert got["second_order_overshoot_pct"] == pytest.approx(100 * (y_2.max() - 1.0), abs=1e-9)
+
+
 # ---------------------------------------------------------------- the linear model of eq. 26
 
 

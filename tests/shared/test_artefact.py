@@ -105,3 +105,29 @@ def test_a_unit_derives_the_same_whatever_the_process_derived_before():
     sp.simplify(sp.sin(sp.Symbol("y")) ** 2 + sp.cos(sp.Symbol("y")) ** 2)  # draws, caches
     sp.core.random.random()
     assert artefact.dumps(artefact.build_frames()) == first
+
+
+def test_the_bytes_depend_on_the_values_not_on_which_objects_are_shared():
+    """Equal SymPy objects (and strings) are written once whether or not they are one Python
+    object: SymPy's cache decides that, so the bytes would otherwise depend on what the process
+    derived before. The artefact loads back to equal values."""
+    x = sp.Symbol("x", real=True)
+    shared = sp.sin(x) + 1
+    # an equal but distinct object, built by unpickling (bypasses SymPy's cache)
+    copy = artefact.pickle.loads(artefact.pickle.dumps(shared))
+    assert copy == shared and copy is not shared
+    name = "".join(["na", "me"])
+
+    def built(second, label):
+        return {
+            "audit_module": "a",
+            "generator_module": "g",
+            "checks": [Check("1", printed=sp.Matrix([shared]), derived=sp.Matrix([second]))],
+            "modules": [{"generator": "name", "header": label, "functions": []}],
+        }
+
+    one = artefact.dumps(built(shared, "name"))
+    assert artefact.dumps(built(copy, name)) == one
+    loaded = artefact.pickle.loads(one)
+    assert loaded["checks"][0].derived == sp.Matrix([shared])
+    assert one != artefact.pickle.dumps(built(copy, name), protocol=artefact.PROTOCOL)
