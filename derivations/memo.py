@@ -40,6 +40,7 @@ True
 from __future__ import annotations
 
 import functools
+import inspect
 import os
 import pickle
 import types
@@ -145,17 +146,37 @@ def _key(args: tuple, kwargs: dict) -> Any:
 
 
 def derivation(func: F) -> F:
-    """Cache the pure derivation ``func`` on its arguments; each call gets a fresh copy."""
+    """Cache the pure derivation ``func`` on its arguments; each call gets a fresh copy.
+
+    A call is keyed by its arguments bound to ``func``'s parameters, defaults filled in, so
+    that ``f("x")``, ``f("x", tau)`` and ``f(axis="x", tau_=tau)`` (the same call when ``tau``
+    is the default) share one result: the derive step and a notebook often spell one call
+    differently.
+
+    >>> calls = []
+    >>> @derivation
+    ... def scaled(a, k=2, *, offset=0):
+    ...     calls.append(a)
+    ...     return k * a + offset
+    >>> scaled(1), scaled(1, 2), scaled(a=1, offset=0), scaled(1, k=3), len(calls)
+    (2, 2, 2, 3, 2)
+    """
     name = f"{func.__module__}.{func.__qualname__}"
     store = _STORES.setdefault(name, {})
+    signature = inspect.signature(func)
 
     @functools.wraps(func)
     def wrapper(*args: Any, **kwargs: Any) -> Any:
-        key = _key(args, kwargs)
+        try:
+            bound = signature.bind(*args, **kwargs)
+        except TypeError:
+            return func(*args, **kwargs)  # the call's own error
+        bound.apply_defaults()
+        key = _key(bound.args, bound.kwargs)
         try:
             value = store[key]
         except KeyError:
-            value = store[key] = func(*args, **kwargs)
+            value = store[key] = func(*bound.args, **bound.kwargs)
         return fresh_copy(value)
 
     wrapper.cache_clear = store.clear  # type: ignore[attr-defined]

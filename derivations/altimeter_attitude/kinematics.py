@@ -106,6 +106,7 @@ def _body_rate_from_euler() -> sp.ImmutableMatrix:
     return sp.ImmutableMatrix(sp.simplify(_plain(w)))
 
 
+@derivation
 def dcm_rate() -> sp.Matrix:
     """d/dt C_b^n in terms of the Euler angles and their rates (left side of eq. 1)."""
     ph, th, ps = euler_functions()
@@ -161,6 +162,7 @@ def quaternion_rates(q: sp.Matrix = s.q, omega: sp.Matrix = s.omega) -> sp.Matri
     return sp.expand(_qmul(q, sp.Matrix([0, *omega])) / 2)
 
 
+@derivation
 def third_row_euler() -> sp.Matrix:
     """eq. 6 (Euler form): C_b^n(3,:)^T; yaw drops out."""
     return sp.simplify(mat_nb().row(2).T)

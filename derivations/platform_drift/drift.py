@@ -110,6 +110,7 @@ def _solve(forcing: sp.Expr, phi0: sp.Expr, phidot0: sp.Expr, hint: str = "defau
     return sp.expand(sol.rhs)
 
 
+@derivation
 def homogeneous_solution(phi0: sp.Expr = s.B, phidot0: sp.Expr | None = None) -> sp.Expr:
     """Eq. 30: general solution of eq. 29, parametrised by phi(0) = B, phi_dot(0) = A sqrt(k_sh)."""
     if phidot0 is None:

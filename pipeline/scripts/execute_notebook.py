@@ -5,10 +5,14 @@
 
 import os
 
-from derivations.memo import ENV_VAR
 from pipeline.atomic import write_text
 from pipeline.notebook_html import build
 from pipeline.script_log import logged
+
+# derivations.memo.ENV_VAR, named here rather than imported: importing derivations imports SymPy
+# (~0.4 CPU-s), which this process does not use (the kernel does; tests/shared/test_memo.py
+# checks that the two names agree)
+ENV_VAR = "INERTIAL_REPRO_DERIVATION_MEMO"
 
 with logged(snakemake.log[0], written=snakemake.output):  # noqa: F821
     # the kernel (inheriting this environment) preloads what the derive step computed

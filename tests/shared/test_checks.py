@@ -165,21 +165,21 @@ def _judged(discrepancy: str) -> dict[str, str]:
 def test_waiting_does_not_use_up_the_simplify_budget(monkeypatch):
     import time
 
-    import derivations.checks as checks
+    import derivations.residual_tidy as rt
 
     def slow_but_idle(expr):
         time.sleep(0.5)  # wall-clock time, no CPU: what a loaded machine adds
         return sp.Symbol("simplified")
 
-    monkeypatch.setattr(checks, "SIMPLIFY_SECONDS", 0.1)
-    monkeypatch.setattr(checks.sp, "simplify", slow_but_idle)
-    assert checks._tidy(2 * x + 2) == sp.Symbol("simplified")
+    monkeypatch.setattr(rt, "SIMPLIFY_SECONDS", 0.1)
+    monkeypatch.setattr(rt.sp, "simplify", slow_but_idle)
+    assert rt.tidy(2 * x + 2) == sp.Symbol("simplified")
 
 
 def test_a_residual_over_the_cpu_budget_is_shown_factored(monkeypatch):
     import time
 
-    import derivations.checks as checks
+    import derivations.residual_tidy as rt
 
     def busy(expr):
         end = time.process_time() + 5.0
@@ -187,9 +187,9 @@ def test_a_residual_over_the_cpu_budget_is_shown_factored(monkeypatch):
             pass
         return sp.Symbol("simplified")
 
-    monkeypatch.setattr(checks, "SIMPLIFY_SECONDS", 0.1)
-    monkeypatch.setattr(checks.sp, "simplify", busy)
-    assert str(checks._tidy(2 * x + 2)) == "2*(x + 1)"  # factor_terms, not the simplified form
+    monkeypatch.setattr(rt, "SIMPLIFY_SECONDS", 0.1)
+    monkeypatch.setattr(rt.sp, "simplify", busy)
+    assert str(rt.tidy(2 * x + 2)) == "2*(x + 1)"  # factor_terms, not the simplified form
 
 
 # a residual of more than LARGE_OPS operations after trigsimp gets the shorter of simplify's
@@ -202,38 +202,56 @@ def _large_residual() -> sp.Expr:
 
 
 def test_a_large_residual_is_shown_as_simplify_shows_it_without_calling_it(monkeypatch):
-    import derivations.checks as checks
+    import derivations.residual_tidy as rt
 
     residual = _large_residual()
-    assert sp.count_ops(sp.trigsimp(residual)) > checks.LARGE_OPS
+    assert sp.count_ops(sp.trigsimp(residual)) > rt.LARGE_OPS
     expected = sp.simplify(sp.trigsimp(residual))
 
     def not_called(expr):
         raise AssertionError("simplify called on a large residual")
 
-    monkeypatch.setattr(checks.sp, "simplify", not_called)
-    assert checks._tidy(residual) == expected
+    monkeypatch.setattr(rt.sp, "simplify", not_called)
+    assert rt.tidy(residual) == expected
 
 
 def test_a_small_residual_still_goes_through_simplify(monkeypatch):
-    import derivations.checks as checks
+    import derivations.residual_tidy as rt
 
     seen = []
-    monkeypatch.setattr(checks.sp, "simplify", lambda expr: seen.append(expr) or expr)
-    checks._tidy(sp.sin(x) ** 2 + sp.cos(x) ** 2 + x)
+    monkeypatch.setattr(rt.sp, "simplify", lambda expr: seen.append(expr) or expr)
+    rt.tidy(sp.sin(x) ** 2 + sp.cos(x) ** 2 + x)
     assert seen == [x + 1]
 
 
 def test_the_large_form_is_the_shorter_candidate_and_equals_the_residual():
-    import derivations.checks as checks
+    import derivations.residual_tidy as rt
 
     a, b, c = sp.symbols("a b c", real=True)
     split = a / (x + 1) + b / (x + 1) - c / (x + 1) + a * b / (x + 1)
-    shown = checks._tidy_large(split)
+    shown = rt._tidy_large(split)
     assert shown == (a * b + a + b - c) / (x + 1)  # cancelled: fewer operations
     assert sp.simplify(shown - split) == 0
     residual = _large_residual()  # a polynomial: cancelling gains nothing, it stays as it is
-    assert sp.expand(checks._tidy_large(residual) - residual) == 0
+    assert sp.expand(rt._tidy_large(residual) - residual) == 0
+
+
+# SymPy's factoring draws random points: each residual is tidied from the generator freshly
+# seeded, so the draws (hence the work, not the result) do not depend on what ran before it
+def test_each_residual_is_tidied_from_a_freshly_seeded_generator(monkeypatch):
+    import sympy.core.random as sympy_random
+
+    import derivations.residual_tidy as rt
+
+    draws = []
+    real = rt._simplified
+    monkeypatch.setattr(rt, "_simplified", lambda r: draws.append(sympy_random.random()) or real(r))
+    residual = sp.sin(x) ** 2 + sp.cos(x) ** 2 + x
+    shown = [rt.tidy(residual)]
+    for _ in range(3):  # another random state before the next tidy
+        sympy_random.random()
+    shown.append(rt.tidy(residual))
+    assert draws[0] == draws[1] and shown == [x + 1, x + 1]
 
 
 def test_a_repeated_residual_is_tidied_once_and_shown_for_every_element(monkeypatch):

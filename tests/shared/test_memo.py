@@ -186,3 +186,10 @@ def test_functions_and_hashable_values_are_their_own_keys():
     x = sp.Symbol("x")
     for value in (x, 3, "a", (x, 1), sp.ImmutableMatrix([x]), sp.sin, _plain_function):
         assert memo.freeze(value) == value and memo.thaw(memo.freeze(value)) == value
+
+
+def test_the_notebook_job_names_the_memo_variable_the_kernel_reads():
+    """pipeline/scripts/execute_notebook.py names the variable rather than importing it (importing
+    derivations imports SymPy, which that process does not use): the same name."""
+    script = (ROOT / "pipeline" / "scripts" / "execute_notebook.py").read_text(encoding="utf-8")
+    assert f'ENV_VAR = "{memo.ENV_VAR}"' in script

@@ -30,6 +30,8 @@ SHARED = [
     "config/config.schema.json",
     "config/schemas/config.schema.json",
     "derivations/checks.py",
+    "derivations/residual_tidy.py",
+    "derivations/memo.py",
     "derivations/codegen.py",
     "derivations/frames.py",
     "pipeline/verdicts",
