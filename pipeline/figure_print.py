@@ -82,9 +82,22 @@ def _root(svg: bytes | str) -> ET.Element:
     return ET.fromstring(data, parser=parser)
 
 
+def _root_start(svg: bytes | str) -> ET.Element:
+    """The root element of an SVG with its attributes, parsed no further than its start tag
+    (a figure's SVG is ~1 MB)."""
+    data = svg.encode("utf-8") if isinstance(svg, str) else svg
+    parser = ET.XMLPullParser(events=("start",))
+    for at in range(0, max(len(data), 1), 8192):
+        parser.feed(data[at : at + 8192])
+        for _event, element in parser.read_events():
+            return element
+    parser.close()  # raises the parse error of a file without a root element
+    raise ValueError("SVG without a root element")
+
+
 def svg_width_mm(svg: bytes | str) -> float:
     """The width of an SVG (its ``width`` attribute) in mm."""
-    width = _root(svg).get("width", "")
+    width = _root_start(svg).get("width", "")
     m = _LENGTH.match(width.strip())
     if m is None:
         raise ValueError(f"SVG width {width!r} is not a length")

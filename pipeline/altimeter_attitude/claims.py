@@ -102,6 +102,30 @@ def _quarters(curve: pd.Series, start: float) -> tuple[float, float]:
 _WINDOW_LIST = {"type": "array", "items": {"enum": list(WINDOWS)}, "minItems": 1}
 
 
+def paired_less_pvalue(x: np.ndarray, y: np.ndarray) -> float:
+    """p-value of the paired one-sided t-test that x is smaller than y: what
+    ``scipy.stats.ttest_rel(x, y, alternative="less").pvalue`` computes (bit for bit: the same
+    mean, variance and Student t distribution function), without importing ``scipy.stats``
+    (~0.6 CPU-s of the verdicts step).
+
+    >>> from scipy.stats import ttest_rel
+    >>> rng = np.random.default_rng(0)
+    >>> x, y = rng.gamma(2.0, 1.0, (2, 100)) ** 2
+    >>> ps = [paired_less_pvalue(x, y), paired_less_pvalue(y, x), paired_less_pvalue(x, x)]
+    >>> want = [ttest_rel(a, b, alternative="less").pvalue for a, b in [(x, y), (y, x), (x, x)]]
+    >>> np.array_equal(ps, want, equal_nan=True)
+    True
+    """
+    from scipy.special import stdtr
+
+    d = np.asarray(x, dtype=float) - np.asarray(y, dtype=float)
+    n = d.size
+    with np.errstate(divide="ignore", invalid="ignore"):
+        var = np.mean((d - np.mean(d, keepdims=True)) ** 2) * (n / (n - 1))
+        t = np.mean(d) / np.sqrt(var / n)
+    return float(stdtr(float(n - 1), t))
+
+
 @CLAIMS.register(
     "less_rms",
     _schema(["reference", "alpha"], reference=_FILTER, alpha=_FRACTION, windows=_WINDOW_LIST),
@@ -109,8 +133,6 @@ _WINDOW_LIST = {"type": "array", "items": {"enum": list(WINDOWS)}, "minItems": 1
 def less_rms(args: Mapping[str, Any], res: ScenarioResults) -> list[ClaimResult]:
     """The filter's RMS is below the reference's for both angles (paired one-sided t-test),
     over each window."""
-    from scipy.stats import ttest_rel
-
     _need(args, res, "less_rms")
     filt, ref = args["filter"], args["reference"]
     windows = args.get("windows")
@@ -135,7 +157,7 @@ def less_rms(args: Mapping[str, Any], res: ScenarioResults) -> list[ClaimResult]
         parts, ok = [], True
         for a in ANGLES:
             x, y = res.per_run(filt, a, window) ** 2, res.per_run(ref, a, window) ** 2
-            p = float(ttest_rel(x, y, alternative="less").pvalue)
+            p = paired_less_pvalue(x, y)
             rx, ry = math.sqrt(x.mean()), math.sqrt(y.mean())
             ok &= rx < ry and p < args["alpha"]
             parts.append(f"{a}: {rx:.3f} vs {ry:.3f} deg (paired one-sided p = {p:.2g})")

@@ -78,16 +78,22 @@ def sensitivity(
     results: Mapping[str, Any],
     judge: Callable[[Mapping[str, Any]], pd.DataFrame],
     explained: Callable[[Mapping[str, Any]], bool],
+    judged: pd.DataFrame | None = None,
 ) -> pd.DataFrame:
     """The variants' inferred N and changed verdicts: ``judge(results)`` gives the verdict
     table, ``explained(item)`` whether a statistical item has a known cause (a row counts as
-    explained when it is also not reproduced as judged)."""
+    explained when it is also not reproduced as judged); ``judged``: the table
+    ``judge(results)`` gives, when the caller has it already (it is not judged again)."""
     n_rows = results["n_rows"]
     items = [
         i for i in (results.get("published") or {}).get("items", []) if i["kind"] == "statistical"
     ]
     first = n_rows.drop_duplicates("id").set_index("id")
-    base = _verdicts(judge, results, n_rows)
+    base = (
+        _verdicts(judge, results, n_rows)
+        if judged is None
+        else dict(zip(judged["id"], judged["verdict"], strict=True))
+    )
     gone = {i["id"]: 0.0 for i in items if base[i["id"]] == "not_reproduced" and explained(i)}
     variants = {
         "as judged": {},

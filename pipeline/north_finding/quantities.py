@@ -207,14 +207,26 @@ def rows(frame: pd.DataFrame, method: str, quantity: str) -> pd.DataFrame:
     return frame[(frame["method"] == method) & (frame["quantity"] == quantity)]
 
 
-def _estimate(estimates: pd.DataFrame, sensor: str, method: str, quantity: str) -> Any:
-    found = rows(estimates[estimates["sensor"] == sensor], method, quantity)
+def _estimate(results: Mapping[str, Any], sensor: str, method: str, quantity: str) -> Any:
+    """The estimates.csv row of one sensor, method and quantity (None if there is none); the
+    rows are indexed by (sensor, method, quantity) once per results mapping."""
+    estimates = results["estimates"]
+    index = results.get("_estimate_rows")
+    if index is None:
+        index = {}
+        columns = [estimates[c].tolist() for c in ("sensor", "method", "quantity")]
+        keys = zip(*columns, strict=True)
+        for position, key in enumerate(keys):
+            index.setdefault(key, []).append(position)
+        if isinstance(results, MutableMapping):
+            results["_estimate_rows"] = index
+    found = index.get((sensor, method, quantity), [])
     if len(found) > 1:
         raise ValueError(
             f"estimates.csv: {len(found)} rows for sensor={sensor}, method={method}, "
             f"quantity={quantity}; allowed: exactly one"
         )
-    return None if found.empty else found.iloc[0]
+    return estimates.iloc[found[0]] if found else None
 
 
 def _power(
@@ -242,9 +254,8 @@ def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
     from pipeline.north_finding.judged_n import judged_at, mixed_n
 
     method, quantity = item["select"]["method"], item["quantity"]
-    estimates = results["estimates"]
     if item["kind"] == "exact":
-        row = _estimate(estimates, "ideal", method, quantity)
+        row = _estimate(results, "ideal", method, quantity)
         if row is None:
             return [
                 Found(
@@ -273,7 +284,7 @@ def locate(item: Mapping[str, Any], results: Mapping[str, Any]) -> list[Found]:
                 "mc_trials.csv",
             )
         ]
-    real = _estimate(estimates, "real", method, quantity)
+    real = _estimate(results, "real", method, quantity)
     finite = np.isfinite(sample)
     left_out = (
         (
@@ -311,7 +322,7 @@ def _approximate(item: Mapping[str, Any], results: Mapping[str, Any], cause: Any
     from pipeline.north_finding.judged_n import judged_at
 
     method, base = item["select"]["method"], ERROR_QUANTITIES[item["quantity"]]
-    real = _estimate(results["estimates"], "real", method, base)
+    real = _estimate(results, "real", method, base)
     mc = rows(results["mc_trials"], method, base)
     if real is None or mc.empty:
         return Found(

@@ -78,11 +78,14 @@ def write_verdicts(
         check_item=check_item,
     )
     if sensitivity_out is not None:
-        write_csv(sensitivity_out, _sensitivity(read_once["results"]), N_SENSITIVITY_COLUMNS)
+        frame = _sensitivity(read_once["results"], table)
+        write_csv(sensitivity_out, frame, N_SENSITIVITY_COLUMNS)
     return table
 
 
-def _sensitivity(results: dict) -> pd.DataFrame:
+def _sensitivity(results: dict, judged: pd.DataFrame) -> pd.DataFrame:
+    """The N-sensitivity table; ``judged``: the verdict table of ``results`` as written (the
+    variant "as judged", not judged a second time)."""
     from pipeline.north_finding.causes import for_item
     from pipeline.north_finding.n_sensitivity import sensitivity
 
@@ -93,6 +96,7 @@ def _sensitivity(results: dict) -> pd.DataFrame:
         results,
         lambda r: engine.verdict_table(published, locate, CLAIMS, r),
         lambda item: for_item(item, results) is not None,
+        judged,
     )
 
 
