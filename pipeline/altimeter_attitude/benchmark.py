@@ -35,7 +35,13 @@ test/benchmark dependency only.
 Last measured (issue 15, commit 384934f, a loaded 2-core machine): the full Monte Carlo of
 the paper scenario at 10,000 runs, run for real (``--child-runs 10000``): 438 CPU-s, peak
 RSS 1.67 GB, 4.38 us per run-step: the memory target met, the CPU target NOT met (1.46x
-short of 300 s on one core; ``monte_carlo.chunk_runs`` spreads it over jobs).
+short of 300 s on one core; ``monte_carlo.chunk_runs`` spreads it over jobs). Part 4
+(commit 2d05726, the same machine shared with three other sessions, load average 5-6 on its
+2 cores), 10,000 runs in chunks of 5,120 and 4,880 runs, 2 at once: chunks 199.0 and 214.5
+CPU-s, merge 3.2 CPU-s, 416.7 CPU-s in all (4.17 us per run-step); wall 931 s; peak RSS 1.37
+GB per process, <= 2.48 GB together. Memory met; wall NOT met as measured (the load; on 2
+idle cores it would be about the larger chunk plus the merge, ~220 s, not measured); CPU on
+one core NOT met.
 """
 
 from __future__ import annotations
