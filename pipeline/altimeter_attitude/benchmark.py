@@ -39,9 +39,11 @@ short of 300 s on one core; ``monte_carlo.chunk_runs`` spreads it over jobs). Pa
 (commit 2d05726, the same machine shared with three other sessions, load average 5-6 on its
 2 cores), 10,000 runs in chunks of 5,120 and 4,880 runs, 2 at once: chunks 199.0 and 214.5
 CPU-s, merge 3.2 CPU-s, 416.7 CPU-s in all (4.17 us per run-step); wall 931 s; peak RSS 1.37
-GB per process, <= 2.48 GB together. Memory met; wall NOT met as measured (the load; on 2
-idle cores it would be about the larger chunk plus the merge, ~220 s, not measured); CPU on
-one core NOT met.
+GB per process, <= 2.48 GB together. After the estimates' post-processing by slices
+(commit c3edbc8, load average 3-4): chunks 192.6 and 200.4, merge 2.7, 395.6 CPU-s in all
+(3.96 us per run-step), wall 631 s, 1.31 GB per process, <= 2.37 GB together. Memory met;
+wall NOT met as measured (the load; on 2 idle cores it would be about the larger chunk plus
+the merge, ~200 s, not measured); CPU on one core NOT met.
 """
 
 from __future__ import annotations
