@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from pipeline.altimeter_attitude import model
-from pipeline.altimeter_attitude.estimates import Estimates
+from pipeline.altimeter_attitude.estimates import Estimates, by_runs
 from pipeline.altimeter_attitude.sensors import Inputs
 from pipeline.generated import altimeter_attitude as gen
 
@@ -36,7 +36,7 @@ def rotate_third_row(c: np.ndarray, omega: np.ndarray, dt: float) -> np.ndarray:
 
 
 def _to_estimates(name: str, cs: np.ndarray) -> Estimates:
-    phi, theta = gen.euler_from_third_row(cs[..., 0], cs[..., 1], cs[..., 2])
+    phi, theta = by_runs(gen.euler_from_third_row, cs[..., 0], cs[..., 1], cs[..., 2])
     nan = np.full(phi.shape, np.nan)
     return Estimates(
         filter=name,
@@ -45,7 +45,7 @@ def _to_estimates(name: str, cs: np.ndarray) -> Estimates:
         roll_sigma=nan,
         pitch_sigma=nan,
         c=cs,
-        norm_error=model.normalisation_error(cs),
+        norm_error=by_runs(model.normalisation_error, cs),
     )
 
 

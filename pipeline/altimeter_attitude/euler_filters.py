@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from pipeline.altimeter_attitude import ukf
-from pipeline.altimeter_attitude.estimates import Estimates
+from pipeline.altimeter_attitude.estimates import Estimates, by_runs
 from pipeline.altimeter_attitude.sensors import Inputs
 from pipeline.generated import altimeter_attitude as gen
 
@@ -74,11 +74,16 @@ def _kernel_inputs(inputs: Inputs) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     )
 
 
+def _third_row(phi: np.ndarray, theta: np.ndarray) -> np.ndarray:
+    """c (..., 3) of eq. 6 from roll and pitch (the generated formula)."""
+    return np.stack(gen.third_row_from_euler(phi, theta), -1)
+
+
 def _estimates_var(name: str, xs: np.ndarray, var: np.ndarray, third_row: bool = True) -> Estimates:
     """Estimates from a kernel's states (N, T+1, 4) and roll/pitch variances (N, T+1, 2);
     ``third_row=False``: c is NaN (a read-only view, not computed)."""
     if third_row:
-        c = np.stack(gen.third_row_from_euler(xs[..., 0], xs[..., 1]), -1)
+        c = by_runs(_third_row, xs[..., 0], xs[..., 1])
     else:
         c = np.broadcast_to(np.nan, (*xs.shape[:2], 3))
     return Estimates(

@@ -27,10 +27,13 @@ the others wait, idle, and then load it (~0.1 CPU-s) instead of compiling it aga
 
 from __future__ import annotations
 
+import contextlib
 import fcntl
 import functools
 import hashlib
 import os
+import sys
+from collections.abc import Iterator
 from importlib.metadata import version
 from pathlib import Path
 
@@ -119,10 +122,32 @@ def jit_lock_path() -> Path:
     return _compile_lock_path()
 
 
+@contextlib.contextmanager
+def _without_scipy_linalg() -> Iterator[None]:
+    """numba's first compilation or cache load in a process imports its numpy implementations
+    (``numba.np.arraymath``), which import ``scipy.linalg`` only to learn whether ``np.dot``
+    may call BLAS (~0.3 CPU-s a process, the largest part of that import). No kernel here
+    uses numpy's linear algebra, so while this context is open the import fails at once
+    (``sys.modules[name] = None``) and numba takes ``np.dot`` to have no BLAS. Nothing is
+    blocked once it closes, nor when ``scipy.linalg`` was imported already; the compiled code
+    of the kernels is the same (they call no BLAS)."""
+    name = "scipy.linalg"
+    if name in sys.modules or "numba.np.arraymath" in sys.modules:
+        yield
+        return
+    sys.modules[name] = None  # type: ignore[assignment]
+    try:
+        yield
+    finally:
+        if sys.modules.get(name, 0) is None:
+            del sys.modules[name]
+
+
 def kernel(fn):
     """:func:`njit` for a kernel called from Python: its first call in a process (cache load
     or compilation) holds the cache directory's lock (``compile.lock``, ``flock``), so no two
     processes compile the same kernel at once; a waiting one then loads what the other saved.
+    That first call does not import ``scipy.linalg`` (:func:`_without_scipy_linalg`).
     The dispatcher is ``.dispatcher``."""
     dispatcher = njit(fn)
 
@@ -130,18 +155,19 @@ def kernel(fn):
     def call(*args):
         if dispatcher.signatures:
             return dispatcher(*args)
-        try:
-            fd = os.open(jit_lock_path(), os.O_RDWR | os.O_CREAT, 0o644)
-        except OSError:  # a read-only cache directory: numba then compiles without caching
-            return dispatcher(*args)
-        try:
+        with _without_scipy_linalg():
             try:
-                fcntl.flock(fd, fcntl.LOCK_EX)
-            except OSError:  # a file system without locks (some network mounts): no lock
-                pass
-            return dispatcher(*args)
-        finally:
-            os.close(fd)  # (releases the lock)
+                fd = os.open(jit_lock_path(), os.O_RDWR | os.O_CREAT, 0o644)
+            except OSError:  # a read-only cache directory: numba then compiles without caching
+                return dispatcher(*args)
+            try:
+                try:
+                    fcntl.flock(fd, fcntl.LOCK_EX)
+                except OSError:  # a file system without locks (some network mounts): no lock
+                    pass
+                return dispatcher(*args)
+            finally:
+                os.close(fd)  # (releases the lock)
 
     call.dispatcher = dispatcher
     return call

@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from pipeline.altimeter_attitude import model
-from pipeline.altimeter_attitude.estimates import Estimates
+from pipeline.altimeter_attitude.estimates import Estimates, by_runs
 from pipeline.altimeter_attitude.sensors import Inputs
 from pipeline.generated import altimeter_attitude as gen
 
@@ -146,7 +146,8 @@ def run_linear_kf(
     else:
         c = np.ascontiguousarray(np.swapaxes(xs[:, :, :3], 0, 1))
         var = np.swapaxes(var, 0, 1)
-    phi, theta = gen.euler_from_third_row(c[..., 0], c[..., 1], c[..., 2])
+    phi, theta = by_runs(gen.euler_from_third_row, c[..., 0], c[..., 1], c[..., 2])
+    norm_error = by_runs(model.normalisation_error, c)
     out = []
     for i, name in enumerate(variants):
         sl = slice(i * n1, (i + 1) * n1)
@@ -158,7 +159,7 @@ def run_linear_kf(
                 roll_sigma=np.sqrt(var[sl, :, 0]),
                 pitch_sigma=np.sqrt(var[sl, :, 1]),
                 c=c[sl],
-                norm_error=model.normalisation_error(c[sl]),
+                norm_error=norm_error[sl],
             )
         )
     return out

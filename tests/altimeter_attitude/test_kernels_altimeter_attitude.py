@@ -199,6 +199,29 @@ def test_kernel_first_call_holds_the_compile_lock(tmp_path, monkeypatch):
     assert disp.dispatcher.signatures and disp(2.0) == 3.0
 
 
+def test_first_kernel_call_does_not_import_scipy_linalg():
+    """A fresh process's first kernel call (numba's registries loaded) leaves scipy.linalg
+    unimported and importable (jit._without_scipy_linalg); the kernel computes as before."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys\n"
+        "import numpy as np\n"
+        "from pipeline.altimeter_attitude import kernels_c\n"
+        "c = kernels_c.complementary_runs(np.zeros((1, 2, 3)), np.ones((1, 2, 3)),\n"
+        "    np.array([[0.0, 0.0, 1.0]]), 0.01, 1.0, 0.1)\n"
+        "assert 'scipy.linalg' not in sys.modules, 'scipy.linalg imported'\n"
+        "import scipy.linalg\n"
+        "print(c.shape, scipy.linalg.__name__)\n"
+    )
+    res = subprocess.run(
+        [sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=600
+    )
+    assert res.returncode == 0, res.stderr
+    assert res.stdout.split() == ["(1,", "3,", "3)", "scipy.linalg"]
+
+
 def test_ukf_without_third_row_gives_the_same_angles(short):
     """run_ukf(third_row=False) (the UKF tuning's form): the same roll, pitch and sigmas bit
     for bit, c left NaN instead of computed."""
