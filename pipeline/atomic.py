@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import json
 import os
-import re
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
@@ -93,17 +92,17 @@ def _formatted(frame: pd.DataFrame) -> pd.DataFrame:
 
 
 #: what makes the csv module quote a field (QUOTE_MINIMAL, delimiter ",", line end "\n")
-_NEEDS_QUOTES = re.compile(r'[,"\r\n]')
+_NEEDS_QUOTES = ',"\r\n'
 
 
 def _needs_quotes(text: str) -> bool:
     """Whether ``text`` holds a character of :data:`_NEEDS_QUOTES` (four substring searches:
-    ~50 times faster than the regular expression on a column of 300,000 fields).
+    ~50 times faster than a regular expression on a column of 300,000 fields).
 
     >>> [_needs_quotes(t) for t in ("a b", "a,b", 'a"b', "a\\rb", "a\\nb", "")]
     [False, True, True, True, True, False]
     """
-    return any(ch in text for ch in ',"\r\n')
+    return any(ch in text for ch in _NEEDS_QUOTES)
 
 
 def _plain_text(values: pd.Series) -> list[str] | None:
