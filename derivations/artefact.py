@@ -29,16 +29,15 @@ every run.
 from __future__ import annotations
 
 import importlib
-import io
 import pickle
 from pathlib import Path
 from typing import Any
 
-import sympy as sp
 import sympy.core.random as _sympy_random
 
 # the classes the artefact holds: imported here so that every reader of an artefact declares
 # (through this module's imports) the code its objects are rebuilt with
+from derivations.canonical_pickle import canonical_dumps
 from derivations.checks import Check
 from derivations.codegen import GeneratedFunction
 
@@ -91,35 +90,10 @@ def build_frames() -> dict[str, Any]:
     }
 
 
-class _CanonicalPickler(pickle._Pickler):
-    """A pickler that writes every SymPy object and string once per value: an object equal to one already
-    written (SymPy's structural equality: type, arguments and assumptions) is written as a
-    reference to it. pickle shares by identity (``id``), and which equal SymPy objects are the
-    same Python object depends on SymPy's cache (a construction that hits it returns the cached
-    object, with the very symbols it was built from), hence on what the process derived before
-    and on the order of the derivation's steps: the bytes then changed with them although no
-    value did (found by tests/shared/test_artefact.py after a derivation took a cheaper route).
-    The pure-Python pickler writes what the C one writes for the same objects."""
-
-    def __init__(self, file: io.BytesIO, protocol: int) -> None:
-        super().__init__(file, protocol=protocol)
-        self._canonical: dict[sp.Basic, sp.Basic] = {}
-        self._strings: dict[str, str] = {}
-
-    def save(self, obj: Any, save_persistent_id: bool = True) -> None:
-        if isinstance(obj, sp.Basic):
-            obj = self._canonical.setdefault(obj, obj)
-        elif type(obj) is str:  # likewise strings (an interned name or a copy of it)
-            obj = self._strings.setdefault(obj, obj)
-        super().save(obj, save_persistent_id)
-
-
 def dumps(artefact: dict[str, Any]) -> bytes:
     """The artefact as pickle bytes (fixed protocol), each SymPy value written once
-    (:class:`_CanonicalPickler`): the bytes depend on the values only."""
-    buffer = io.BytesIO()
-    _CanonicalPickler(buffer, PROTOCOL).dump({k: artefact[k] for k in KEYS})
-    return buffer.getvalue()
+    (:func:`derivations.canonical_pickle.canonical_dumps`): the bytes depend on the values only."""
+    return canonical_dumps({k: artefact[k] for k in KEYS}, PROTOCOL)
 
 
 def load(path: str | Path) -> dict[str, Any]:

@@ -51,6 +51,8 @@ from typing import Any, TypeVar
 
 import sympy as sp
 
+from derivations.canonical_pickle import canonical_dumps
+
 __all__ = [
     "ENV_VAR",
     "derivation",
@@ -189,8 +191,9 @@ def snapshot() -> dict[str, dict[Any, Any]]:
 
 
 def dumps(snap: dict[str, dict[Any, Any]]) -> bytes:
-    """``snap`` pickled (fixed protocol; the same bytes for the same derivations)."""
-    return pickle.dumps(snap, protocol=PROTOCOL)
+    """``snap`` pickled (fixed protocol), each SymPy value written once: the same bytes for the
+    same derivations, whatever else the process computed before (SymPy's cache)."""
+    return canonical_dumps(snap, PROTOCOL)
 
 
 def preload(snap: dict[str, dict[Any, Any]]) -> None:
