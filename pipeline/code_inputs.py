@@ -28,7 +28,7 @@ from __future__ import annotations
 import ast
 import json
 import os
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from functools import cache
 from pathlib import Path
 from typing import Any
@@ -55,10 +55,25 @@ def module_file(name: str, root: Path = ROOT) -> Path | None:
     return None
 
 
+# the fields that hold statements (an import is a statement: no expression holds one)
+_BLOCKS = ("body", "orelse", "finalbody", "handlers", "cases")
+
+
+def _statements(tree: ast.AST) -> Iterator[ast.AST]:
+    """Every statement of ``tree`` (and the except handlers and match cases holding some),
+    at any depth: a tenth of the nodes ``ast.walk`` visits, the same imports."""
+    todo = [tree]
+    while todo:
+        node = todo.pop()
+        yield node
+        for field in _BLOCKS:
+            todo.extend(getattr(node, field, ()))
+
+
 def _imported_names(tree: ast.AST, module: str, is_package: bool) -> set[str]:
     """Absolute names a module's source imports (``from a import b`` gives ``a`` and ``a.b``)."""
     names: set[str] = set()
-    for node in ast.walk(tree):
+    for node in _statements(tree):
         if isinstance(node, ast.Import):
             names.update(alias.name for alias in node.names)
         elif isinstance(node, ast.ImportFrom):

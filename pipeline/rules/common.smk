@@ -18,6 +18,7 @@ sys.path.insert(0, workflow.basedir)
 
 from pipeline.code_inputs import module_closure, notebook_imports, script_imports  # noqa: E402
 from pipeline.config import ConfigError  # noqa: E402
+from pipeline.job_priority import UNMEASURED_COST_S, dag_bottom_levels  # noqa: E402
 from pipeline.job_resources import ResourceTable  # noqa: E402
 from pipeline.registry import check_workflow  # noqa: E402
 
@@ -82,6 +83,51 @@ def job_resources(benchmark):
         return value
 
     return {"mem_mb": pick("mem_mb"), "runtime": pick("runtime")}
+
+
+def job_priority(benchmark):
+    """A rule's ``priority:``: the job's bottom level in CPU seconds, its measured cost plus the
+    costliest chain of jobs waiting on it (pipeline.job_priority), so that on few cores the
+    long chains start first. Read off the run's DAG when Snakemake asks (after building it)."""
+    job = benchmark_job(benchmark)
+
+    def priority(wildcards):
+        name = job.format(**dict(wildcards.items()))
+        levels = _bottom_levels()
+        return levels[name] if name in levels else _job_cost(job, dict(wildcards.items()))
+
+    return priority
+
+
+def _job_cost(template, wildcards):
+    request = JOB_RESOURCES.request(template, wildcards)
+    return request.cpu_s if request else UNMEASURED_COST_S
+
+
+_LEVELS = {}
+
+
+def _bottom_levels():
+    """The bottom level of every job still to run, by its benchmark name (computed once per
+    DAG); empty if this Snakemake's DAG does not expose its jobs and their dependents."""
+    dag = workflow.dag
+    try:
+        jobs = list(dag.needrun_jobs())
+        key = (id(dag), len(jobs))
+        if key not in _LEVELS:
+            named = [j for j in jobs if j.benchmark]
+            names = {j: benchmark_job(j.benchmark) for j in named}
+            templates = {j: benchmark_job(j.rule.benchmark) for j in named}
+            levels = dag_bottom_levels(
+                jobs,
+                lambda j: list(dag.depending.get(j, {})),
+                lambda j: _job_cost(templates[j], j.wildcards_dict) if j in names else 0.0,
+            )
+            _LEVELS.clear()
+            _LEVELS[key] = {names[j]: level for j, level in levels.items() if j in names}
+        return _LEVELS[key]
+    except AttributeError:
+        return {}
 
 
 def local_rules(rules):

@@ -14,6 +14,7 @@ rule derive:
         f"{RESULTS}/{{paper}}/logs/derive.log",
     benchmark:
         f"{RESULTS}/{{paper}}/benchmarks/derive.tsv"
+    priority: job_priority(f"{RESULTS}/{{paper}}/benchmarks/derive.tsv")
     conda:
         ENV
     threads: job_threads(f"{RESULTS}/{{paper}}/benchmarks/derive.tsv")
@@ -37,6 +38,7 @@ rule derive_frames:
         f"{RESULTS}/logs/derive_frames.log",
     benchmark:
         f"{RESULTS}/benchmarks/derive_frames.tsv"
+    priority: job_priority(f"{RESULTS}/benchmarks/derive_frames.tsv")
     conda:
         ENV
     threads: job_threads(f"{RESULTS}/benchmarks/derive_frames.tsv")
@@ -59,6 +61,7 @@ rule codegen_check:
         f"{RESULTS}/{{paper}}/logs/codegen_check.log",
     benchmark:
         f"{RESULTS}/{{paper}}/benchmarks/codegen_check.tsv"
+    priority: job_priority(f"{RESULTS}/{{paper}}/benchmarks/codegen_check.tsv")
     conda:
         ENV
     threads: job_threads(f"{RESULTS}/{{paper}}/benchmarks/codegen_check.tsv")
@@ -84,6 +87,7 @@ rule audit:
         f"{RESULTS}/{{paper}}/logs/audit.log",
     benchmark:
         f"{RESULTS}/{{paper}}/benchmarks/audit.tsv"
+    priority: job_priority(f"{RESULTS}/{{paper}}/benchmarks/audit.tsv")
     conda:
         ENV
     threads: job_threads(f"{RESULTS}/{{paper}}/benchmarks/audit.tsv")
@@ -110,6 +114,7 @@ rule notebook:
         f"{RESULTS}/{{paper}}/logs/notebook.log",
     benchmark:
         f"{RESULTS}/{{paper}}/benchmarks/notebook.tsv"
+    priority: job_priority(f"{RESULTS}/{{paper}}/benchmarks/notebook.tsv")
     conda:
         ENV
     threads: job_threads(f"{RESULTS}/{{paper}}/benchmarks/notebook.tsv")

@@ -13,6 +13,7 @@ rule reproduction_html:
         f"{RESULTS}/logs/reproduction_html.log",
     benchmark:
         f"{RESULTS}/benchmarks/reproduction_html.tsv"
+    priority: job_priority(f"{RESULTS}/benchmarks/reproduction_html.tsv")
     conda:
         ENV
     threads: job_threads(f"{RESULTS}/benchmarks/reproduction_html.tsv")
@@ -33,6 +34,7 @@ rule reproduction_pdf:
         f"{RESULTS}/logs/reproduction_pdf.log",
     benchmark:
         f"{RESULTS}/benchmarks/reproduction_pdf.tsv"
+    priority: job_priority(f"{RESULTS}/benchmarks/reproduction_pdf.tsv")
     conda:
         ENV
     threads: job_threads(f"{RESULTS}/benchmarks/reproduction_pdf.tsv")

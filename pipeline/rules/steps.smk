@@ -23,6 +23,7 @@ for _paper in PAPERS.values():
             wildcard_constraints:
                 scenario="|".join(_scenarios),
                 chunk=r"\d+",
+            priority: job_priority(step_log(_paper, _step, "benchmarks"))
             conda:
                 ENV
             threads: job_threads(step_log(_paper, _step, "benchmarks"))
