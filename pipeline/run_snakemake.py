@@ -27,6 +27,11 @@ play (no ``--executor``, no profile given or found); then :func:`skip_executor_p
 the SLURM plugins out of Snakemake's plugin registry. A run with a profile or an executor
 (``make reproduce-slurm``) loads every plugin as before.
 
+A third: each pass of the loop re-read the size of every input of every ready job (with the
+code inputs, hundreds of files a pass), though a ready job's inputs no longer change;
+:func:`known_input_sizes` reads each file's size once. The sizes only order jobs of equal
+priority (the rules' priorities, ``pipeline.job_priority``, come first).
+
 >>> import snakemake
 >>> snakemake.__version__ == PATCHED_VERSION
 True
@@ -34,17 +39,20 @@ True
 
 from __future__ import annotations
 
+import inspect
 import os
 import pkgutil
 import sys
 import threading
 from collections.abc import Iterable, Mapping
 from pathlib import Path
+from typing import Any
 
 __all__ = [
     "PATCHED_VERSION",
     "CLUSTER_PLUGINS",
     "one_pending_reevaluation",
+    "known_input_sizes",
     "local_run",
     "skip_executor_plugins",
     "main",
@@ -99,6 +107,48 @@ def one_pending_reevaluation(scheduler_class: type) -> bool:
         timer.start()
 
     scheduler_class._schedule_reevalutation = schedule_reevaluation
+    return True
+
+
+def known_input_sizes(scheduler_class: type) -> bool:
+    """Make ``scheduler_class.update_input_sizes`` measure only the inputs it has not measured
+    yet. Snakemake calls it on every pass of its loop with every ready job, and re-reads the
+    size of each input of each of them (an existence check and a stat, each a coroutine);
+    but a ready job's inputs are final (the jobs that write them have finished), so a size once
+    read stays right. Returns whether the class was patched (False: no such coroutine).
+
+    >>> class Scheduler:
+    ...     def __init__(self):
+    ...         self._input_sizes, self.read = {}, []
+    ...     async def update_input_sizes(self, jobs):
+    ...         paths = {f for job in jobs for f in job.input}
+    ...         self.read += sorted(paths)
+    ...         self._input_sizes.update((f, 1) for f in paths)
+    >>> known_input_sizes(Scheduler)
+    True
+    >>> import asyncio
+    >>> job = lambda *files: type("Job", (), {"input": files})
+    >>> s = Scheduler()
+    >>> asyncio.run(s.update_input_sizes([job("a", "b")]))
+    >>> asyncio.run(s.update_input_sizes([job("a", "b"), job("b", "c")]))
+    >>> s.read
+    ['a', 'b', 'b', 'c']
+    """
+    update = getattr(scheduler_class, "update_input_sizes", None)
+    if not inspect.iscoroutinefunction(update):
+        return False
+
+    async def update_input_sizes(self, jobs: Iterable[Any]) -> None:
+        jobs = list(jobs)
+        known = self._input_sizes
+        new = [job for job in jobs if any(f not in known for f in job.input)]
+        if new:
+            await update(self, new)
+        # Snakemake forgets sizes past 10,000 files: then read every job's again
+        if any(f not in known for job in jobs for f in job.input):
+            await update(self, jobs)
+
+    scheduler_class.update_input_sizes = update_input_sizes
     return True
 
 
@@ -185,6 +235,7 @@ def main(argv: list[str] | None = None) -> None:
         from snakemake.scheduling.job_scheduler import JobScheduler
 
         one_pending_reevaluation(JobScheduler)
+        known_input_sizes(JobScheduler)
     from snakemake.cli import main as snakemake_main
 
     snakemake_main(args)

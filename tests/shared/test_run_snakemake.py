@@ -24,6 +24,8 @@ def test_pinned_snakemake_is_the_patched_one() -> None:
     subclass = type("Scheduler", (JobScheduler,), {})
     assert run_snakemake.one_pending_reevaluation(subclass)
     assert subclass._schedule_reevalutation is not JobScheduler._schedule_reevalutation
+    assert run_snakemake.known_input_sizes(subclass)
+    assert subclass.update_input_sizes is not JobScheduler.update_input_sizes
 
 
 def test_many_requests_one_timer() -> None:
