@@ -21,8 +21,9 @@ fresh clone has, and ``make workflow`` (what ``make reproduce`` runs after set-u
 Snakemake report included) runs there with this checkout's ``.venv`` on 2 cores. It prints the
 wall time, the CPU seconds of every process it started, the load average before and after
 (the wall time holds only on an idle machine), the per-step table of that run and its no-op
-rerun. Snakemake samples a job's CPU time every second or so, so the per-step CPU seconds
-under-count short jobs; the total is exact (``getrusage`` of the children).
+rerun. Snakemake samples a job's CPU time every 0.5 s for its first 15 s, then every 30 s, and
+not at its end, so the per-step CPU seconds under-count short jobs, and long ones (starred in
+the table: a loaded machine); the total is exact (``getrusage`` of the children).
 
 ``--baseline DIR`` adds the same columns for another results directory (e.g. a checkout
 before a change) and the difference. The timings are of this machine and this run; they are
@@ -57,6 +58,10 @@ __all__ = [
 
 #: issue 15's targets, seconds
 FULL_RUN_TARGET_S = 60.0
+#: Snakemake (9.27.1, snakemake/benchmark.py) samples a job's CPU time every 0.5 s for its
+#: first 30 samples, then every 30 s, and not at its end: the CPU a longer job spends after its
+#: last sample is missing from its benchmark file
+SAMPLED_DENSELY_S = 15.0
 NOOP_TARGET_S = 3.0
 CORES = 2
 
@@ -73,6 +78,8 @@ class StepTime:
     #: newest benchmark file's mtime and the earliest start (mtime - wall) of the step's jobs
     end: float
     start: float
+    #: the longest wall time of one of its jobs
+    longest_s: float = 0.0
 
 
 def _read_tsv(path: Path) -> tuple[float, float]:
@@ -116,6 +123,7 @@ def collect(results: Path) -> list[StepTime]:
             sum(w for w, _, _ in jobs),
             max(m for _, _, m in jobs),
             min(m - w for w, _, m in jobs),
+            max(w for w, _, _ in jobs),
         )
         for (paper, step), jobs in sorted(found.items())
     ]
@@ -137,6 +145,7 @@ def step_table(steps: list[StepTime], baseline: list[StepTime] | None = None) ->
         cpu = f"{s.cpu_s:>8.1f}" if s else f"{'-':>8}"
         wall = f"{s.wall_s:>8.1f}" if s else f"{'-':>8}"
         line = f"{key[0]:<20} {key[1]:<22} {jobs} {cpu} {wall}"
+        line += " *" if s and s.longest_s > SAMPLED_DENSELY_S else ""
         if baseline is not None:
             old = f"{b.cpu_s:>13.1f}" if b else f"{'-':>13}"
             change = f"{(s.cpu_s if s else 0.0) - (b.cpu_s if b else 0.0):>+8.1f}"
@@ -148,7 +157,13 @@ def step_table(steps: list[StepTime], baseline: list[StepTime] | None = None) ->
     if baseline is not None:
         old_total = sum(b.cpu_s for b in baseline)
         foot += f" {old_total:>13.1f} {total - old_total:>+8.1f}"
-    return "\n".join(lines + ["-" * len(head), foot])
+    notes = []
+    if any(s.longest_s > SAMPLED_DENSELY_S for s in steps):
+        notes.append(
+            f"* a job ran longer than {SAMPLED_DENSELY_S:.0f} s of wall: Snakemake then samples "
+            "its CPU time every 30 s, so its CPU seconds are a lower bound (a loaded machine)"
+        )
+    return "\n".join(lines + ["-" * len(head), foot, *notes])
 
 
 def _children_cpu() -> float:

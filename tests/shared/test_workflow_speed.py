@@ -143,6 +143,14 @@ def test_bench_collect_groups_scenarios(tmp_path: Path) -> None:
     total = table.splitlines()[-1].split()
     # jobs, CPU, wall, CPU before, change
     assert total[1:] == ["4", "7.8", "10.0", "0.8", "+7.0"]
+    assert "*" not in table
+    # a job longer than Snakemake's dense sampling: its CPU seconds are flagged a lower bound
+    _tsv(res / "nf" / "benchmarks" / "simulate_paper.tsv", 16.0, 1.5)
+    steps = {(s.paper, s.step): s for s in bench_workflow.collect(res)}
+    lines = bench_workflow.step_table(list(steps.values())).splitlines()
+    flagged = [line.split()[1] for line in lines if line.endswith(" *")]
+    assert flagged == ["simulate"]
+    assert lines[-1].startswith("* a job ran longer than 15 s") and "lower bound" in lines[-1]
 
 
 def test_bench_bad_tsv(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
