@@ -132,8 +132,15 @@ workflow:
 		$(SNAKEMAKE_RUN) --unlock --quiet; \
 	fi
 	$(if $(strip $(CONFIG)),PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.check_config $(CONFIG))
-	$(SNAKEMAKE_RUN) $(WORKFLOW_ARGS) $(CONFIG_ARGS) --rerun-incomplete \
-		--rerun-triggers mtime params input code software-env --printshellcmds
+	@tmp="$(REPORT_TMP)"; report=""; \
+	if $(REPORT_STALE); then \
+		report="--report $(CURDIR)/$$tmp --report-after-run"; mkdir -p $(dir $(SNAKEMAKE_REPORT)); \
+	fi; \
+	trap 'rm -f "$$tmp"' EXIT; \
+	cmd="$(SNAKEMAKE_RUN) $(WORKFLOW_ARGS) $(CONFIG_ARGS) --rerun-incomplete \
+		--rerun-triggers mtime params input code software-env --printshellcmds $$report"; \
+	echo "$$cmd"; eval "$$cmd" || exit $$?; \
+	if [ -n "$$report" ] && [ -f "$$tmp" ]; then mv -f "$$tmp" $(SNAKEMAKE_REPORT); fi
 	@$(MAKE) --no-print-directory snakemake-report
 
 # Snakemake's HTML report (~9 s of CPU, 27 MB) only when something it shows is newer than it:
@@ -141,18 +148,25 @@ workflow:
 # lists, the config, or the run metadata (runtimes) a job writes. Written to a temporary file
 # in reports/ and renamed over the old one, so an interrupted report leaves the old one whole.
 # With CONFIG= it is always rebuilt (the config it shows may differ from the last run's).
+# When it is already stale before the run (a fresh clone, after `make clean`), the run itself
+# writes it at its end (--report-after-run: no second start of Snakemake, ~3 CPU-s and as many
+# seconds at the end of a full run); else it is built after the run if the run changed it.
 SNAKEMAKE_REPORT := reports/snakemake.html
 REPORT_SOURCES   := Snakefile config pipeline/rules pipeline/scripts results reports \
 	.snakemake/metadata
 
+# (shell) whether the report is missing or older than something it shows
+REPORT_STALE := { [ ! -f $(SNAKEMAKE_REPORT) ] || [ -n "$(strip $(CONFIG))" ] || \
+	[ -n "$$(find $(REPORT_SOURCES) -type f -newer $(SNAKEMAKE_REPORT) ! -path $(SNAKEMAKE_REPORT) \
+		! -name '.snakemake-report.*' -print -quit 2>/dev/null)" ]; }
+REPORT_TMP := $(dir $(SNAKEMAKE_REPORT)).snakemake-report.$$$$.html
+
 snakemake-report:
-	@newer="$$(find $(REPORT_SOURCES) -type f -newer $(SNAKEMAKE_REPORT) \
-		! -path $(SNAKEMAKE_REPORT) ! -name '.snakemake-report.*' -print -quit 2>/dev/null)$(if $(strip $(CONFIG)),CONFIG)"; \
-	if [ -f $(SNAKEMAKE_REPORT) ] && [ -z "$$newer" ]; then \
+	@if ! $(REPORT_STALE); then \
 		echo "$(SNAKEMAKE_REPORT) is up to date"; exit 0; \
 	fi; \
 	mkdir -p $(dir $(SNAKEMAKE_REPORT)); \
-	tmp="$(dir $(SNAKEMAKE_REPORT)).snakemake-report.$$$$.html"; \
+	tmp="$(REPORT_TMP)"; \
 	trap 'rm -f "$$tmp"' EXIT; \
 	$(SNAKEMAKE_RUN) $(CONFIG_ARGS) --report $(CURDIR)/$$tmp && mv -f "$$tmp" $(SNAKEMAKE_REPORT)
 

@@ -92,6 +92,12 @@ def test_make_reproduce_recovers_after_kill_9(workflow_run, tmp_path):
     assert again.returncode == 0, out[-4000:]
     assert "releasing it" in out
     assert _digests(repo) == before
+    # Snakemake's report was missing before the run: the run wrote it at its end (in its own
+    # process, --report-after-run), through a temporary file it renamed
+    assert "--report-after-run" in out and "Report created" in out
+    assert "snakemake.html is up to date" in out
+    assert (repo / "reports" / "snakemake.html").stat().st_size > 0
+    assert not list((repo / "reports").glob(".snakemake-report.*"))
 
 
 def test_a_second_make_reproduce_in_the_same_checkout_is_refused(tmp_path):
