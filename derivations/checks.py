@@ -57,6 +57,7 @@ import numpy as np
 import sympy as sp
 
 from derivations.discrepancies import DISCREPANCIES, kind_of
+from derivations.futrig_memo import memoised_futrig
 from derivations.residual_tidy import tidy as _tidy
 
 __all__ = [
@@ -256,8 +257,10 @@ def run_check(check: Check) -> AuditRow:
 
 
 def run_audit(checks: Iterable[Check]) -> list[AuditRow]:
-    """Run every check; equation numbers must be unique."""
-    rows = [run_check(c) for c in checks]
+    """Run every check; equation numbers must be unique. The residuals are tidied with each
+    ``trigsimp`` node simplified once for all checks (:mod:`derivations.futrig_memo`)."""
+    with memoised_futrig():
+        rows = [run_check(c) for c in checks]
     seen: set[str] = set()
     for r in rows:
         if r.equation in seen:
