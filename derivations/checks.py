@@ -69,6 +69,7 @@ __all__ = [
     "audit_frame",
     "audit_main",
     "audit_outputs",
+    "audit_records",
     "math_record",
     "STATUSES",
     "DISCREPANCIES",
@@ -308,15 +309,21 @@ def math_record(row: AuditRow) -> dict[str, Any]:
     return rec
 
 
+def audit_records(checks: Iterable[Check]) -> tuple[list[dict[str, str]], list[dict[str, Any]]]:
+    """(the rows of equation_audit.csv as dicts of strings, list of math records) from one
+    audit run, without pandas (the audit job writes them with ``pipeline.atomic.write_text_csv``)."""
+    rows = run_audit(checks)
+    return [r.as_dict() for r in rows], [math_record(r) for r in rows]
+
+
 def audit_outputs(checks: Iterable[Check]):
     """(DataFrame with the contract columns, list of math records) from one audit run."""
     import pandas as pd
 
     from pipeline.columns import AUDIT_COLUMNS
 
-    rows = run_audit(checks)
-    frame = pd.DataFrame([r.as_dict() for r in rows], columns=AUDIT_COLUMNS)
-    return frame, [math_record(r) for r in rows]
+    rows, records = audit_records(checks)
+    return pd.DataFrame(rows, columns=AUDIT_COLUMNS), records
 
 
 def audit_frame(checks: Iterable[Check]):
