@@ -5,7 +5,7 @@ its greedy search of Fu's rules (``sympy.simplify.trigsimp._futrig``) on every n
 ``simplify``, which calls it. The same node comes back often: a residual's denominator
 repeated in several terms, ``sin(phi)*cos(theta)`` in every sum that holds it, the same
 coefficients simplified by one derivation after another. On the three papers' derivations and
-audits about two in three of those calls repeat a node already seen (north_finding's audit:
+audits about two in three of those calls repeat a node already seen (the north-finding audit:
 567 of 812).
 
 ``_futrig`` is a function of its argument's value: its rules are rewritings, the greedy search
