@@ -40,6 +40,7 @@ import sympy.core.random as _sympy_random
 from derivations.canonical_pickle import canonical_dumps
 from derivations.checks import Check
 from derivations.codegen import GeneratedFunction
+from derivations.futrig_memo import memoised_futrig
 
 __all__ = ["FRAMES", "PROTOCOL", "build", "build_frames", "dumps", "load"]
 
@@ -69,12 +70,14 @@ def build(audit_module: str, generator_module: str) -> dict[str, Any]:
     module, with its header. The shared frames module is derived once for every paper
     (:func:`build_frames`, the ``derive_frames`` rule), not in each paper's artefact."""
     audit = importlib.import_module(audit_module)
-    modules = [_generated(generator_module)]
-    _reseed()
+    with memoised_futrig():  # each trigsimp node once in the process (the same results)
+        modules = [_generated(generator_module)]
+        _reseed()
+        checks = audit.checks()
     return {
         "audit_module": audit_module,
         "generator_module": generator_module,
-        "checks": audit.checks(),
+        "checks": checks,
         "modules": modules,
     }
 
@@ -86,8 +89,13 @@ def build_frames() -> dict[str, Any]:
         "audit_module": None,
         "generator_module": FRAMES,
         "checks": [],
-        "modules": [_generated(FRAMES)],
+        "modules": _frames_modules(),
     }
+
+
+def _frames_modules() -> list[dict[str, Any]]:
+    with memoised_futrig():
+        return [_generated(FRAMES)]
 
 
 def dumps(artefact: dict[str, Any]) -> bytes:

@@ -53,10 +53,10 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-import numpy as np
 import sympy as sp
 
 from derivations.discrepancies import DISCREPANCIES, kind_of
+from derivations.futrig_memo import memoised_futrig
 from derivations.residual_tidy import tidy as _tidy
 
 __all__ = [
@@ -68,6 +68,7 @@ __all__ = [
     "audit_frame",
     "audit_main",
     "audit_outputs",
+    "audit_records",
     "math_record",
     "STATUSES",
     "DISCREPANCIES",
@@ -181,6 +182,8 @@ def numeric_residual(
     symbols = sorted(
         set().union(*(e.free_symbols for e in [*residuals, *scales])), key=lambda s: s.name
     )
+    import numpy as np  # here only: a derive or codegen check job need not import it
+
     rng = np.random.default_rng(seed)
     worst = 0.0
     # one function for every residual and scale (one lambdify, not two per element); each
@@ -256,8 +259,10 @@ def run_check(check: Check) -> AuditRow:
 
 
 def run_audit(checks: Iterable[Check]) -> list[AuditRow]:
-    """Run every check; equation numbers must be unique."""
-    rows = [run_check(c) for c in checks]
+    """Run every check; equation numbers must be unique. The residuals are tidied with each
+    ``trigsimp`` node simplified once for all checks (:mod:`derivations.futrig_memo`)."""
+    with memoised_futrig():
+        rows = [run_check(c) for c in checks]
     seen: set[str] = set()
     for r in rows:
         if r.equation in seen:
@@ -305,15 +310,21 @@ def math_record(row: AuditRow) -> dict[str, Any]:
     return rec
 
 
+def audit_records(checks: Iterable[Check]) -> tuple[list[dict[str, str]], list[dict[str, Any]]]:
+    """(the rows of equation_audit.csv as dicts of strings, list of math records) from one
+    audit run, without pandas (the audit job writes them with ``pipeline.atomic.write_text_csv``)."""
+    rows = run_audit(checks)
+    return [r.as_dict() for r in rows], [math_record(r) for r in rows]
+
+
 def audit_outputs(checks: Iterable[Check]):
     """(DataFrame with the contract columns, list of math records) from one audit run."""
     import pandas as pd
 
     from pipeline.columns import AUDIT_COLUMNS
 
-    rows = run_audit(checks)
-    frame = pd.DataFrame([r.as_dict() for r in rows], columns=AUDIT_COLUMNS)
-    return frame, [math_record(r) for r in rows]
+    rows, records = audit_records(checks)
+    return pd.DataFrame(rows, columns=AUDIT_COLUMNS), records
 
 
 def audit_frame(checks: Iterable[Check]):

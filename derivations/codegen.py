@@ -24,12 +24,12 @@ def f(x, y):
 from __future__ import annotations
 
 import keyword
+import math
 import os
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import numpy as np
 import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
 
@@ -128,7 +128,7 @@ def render_function(fn: GeneratedFunction) -> str:
         lines.append(f"    out{i} = {printer.doprint(e)}")
         outs.append(f"out{i}")
     if fn.shape is not None:
-        if single or len(outs) != int(np.prod(fn.shape)):
+        if single or len(outs) != math.prod(fn.shape):
             raise ValueError(f"function {fn.name}: {len(outs)} outputs do not fill {fn.shape}")
         lines.append(f"    return _shaped({tuple(fn.shape)!r}, {', '.join(outs)})")
     elif single:

@@ -9,7 +9,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from pipeline.atomic import _csv_text, _formatted, write_csv
+from pipeline.atomic import _csv_text, _formatted, write_csv, write_text_csv
 
 
 def _pandas_bytes(frame: pd.DataFrame, tmp_path: Path) -> bytes:
@@ -71,3 +71,18 @@ def test_anything_else_goes_to_pandas(change, tmp_path):
     assert _csv_text(_formatted(frame)) is None
     out = write_csv(tmp_path / "slow.csv", frame, list(frame.columns))
     assert out.read_bytes() == _pandas_bytes(frame, tmp_path)
+
+
+def test_a_table_of_strings_is_written_as_write_csv_writes_it_without_pandas(tmp_path):
+    """The equation audit's rows (pipeline/scripts/equation_audit.py): commas, quotes, line
+    ends, empty fields and non-ASCII text, as write_csv writes them from a DataFrame."""
+    fields = ["", "a", "x, y", 'say "hi"', "two\nlines", "cr\rhere", "ünïcode", " spaced "]
+    rng = np.random.default_rng(5)
+    columns = ["equation", "status", "residual", "note", "kind"]
+    rows = [{c: str(rng.choice(fields)) for c in columns} for _ in range(200)]
+    written = write_text_csv(tmp_path / "t.csv", rows, columns).read_bytes()
+    frame = pd.DataFrame(rows, columns=columns)
+    assert written == write_csv(tmp_path / "p.csv", frame, columns).read_bytes()
+    assert written == _pandas_bytes(frame, tmp_path)
+    with pytest.raises(ValueError, match="'kind' missing or not a string"):
+        write_text_csv(tmp_path / "bad.csv", [{**rows[0], "kind": 1}], columns)

@@ -31,6 +31,7 @@ SHARED = [
     "config/schemas/config.schema.json",
     "derivations/checks.py",
     "derivations/residual_tidy.py",
+    "derivations/futrig_memo.py",
     "derivations/memo.py",
     "derivations/codegen.py",
     "derivations/frames.py",
