@@ -52,7 +52,10 @@ from nbconvert.filters.markdown_mistune import IPythonRenderer, MarkdownWithMath
 from nbconvert.filters.strings import clean_html
 from nbconvert.preprocessors import CoalesceStreamsPreprocessor
 
+from pipeline import notebook_kernel
+
 __all__ = [
+    "KERNEL_EXTENSION",
     "KERNEL_HASH_SEED",
     "MathConversionError",
     "OfflineHTMLExporter",
@@ -68,6 +71,11 @@ __all__ = [
 
 #: ``PYTHONHASHSEED`` of the kernel that executes a notebook (set and dict order reproducible)
 KERNEL_HASH_SEED = "0"
+#: the IPython extension the kernel that executes a notebook loads (see :func:`execute`;
+#: imported here too, so that the notebook jobs' code inputs include it)
+KERNEL_EXTENSION = notebook_kernel.__name__
+#: the repository (on the kernel's ``PYTHONPATH``, for :data:`KERNEL_EXTENSION`)
+ROOT = Path(__file__).resolve().parents[1]
 
 
 class MathConversionError(ValueError):
@@ -335,8 +343,10 @@ def execute(path: str | os.PathLike[str], cwd: str | os.PathLike[str] = ".", tim
     ``cwd`` and whose ``PYTHONHASHSEED`` is :data:`KERNEL_HASH_SEED`; return it, normalised.
     A notebook that reads the clock is refused (its page would differ between runs).
 
-    The kernel is killed once the last cell has run: everything the page shows has arrived by
-    then, and an orderly exit spent ~1 CPU-s tearing down the SymPy objects."""
+    The kernel starts with :mod:`pipeline.notebook_kernel` loaded (no pretty-printed plain
+    text for an output the page shows as LaTeX; the repository is put on its ``PYTHONPATH``
+    to import it) and is killed once the last cell has run: everything the page shows has
+    arrived by then, and an orderly exit spent ~1 CPU-s tearing down the SymPy objects."""
     nb = nbformat.read(path, as_version=4)
     clock = wall_clock_reads(nb)
     if clock:
@@ -344,22 +354,21 @@ def execute(path: str | os.PathLike[str], cwd: str | os.PathLike[str] = ".", tim
             f"{path}: reads the clock, so its page would differ between runs (the workflow "
             "records run times in the rule's benchmark file):\n  " + "\n  ".join(clock)
         )
-    previous = os.environ.get("PYTHONHASHSEED")
-    os.environ["PYTHONHASHSEED"] = KERNEL_HASH_SEED  # the kernel inherits this environment
-    try:
-        NotebookClient(
-            nb,
-            timeout=timeout,
-            kernel_name="python3",
-            record_timing=False,
-            shutdown_kernel="immediate",
-            resources={"metadata": {"path": str(cwd)}},
-        ).execute()
-    finally:
-        if previous is None:
-            os.environ.pop("PYTHONHASHSEED", None)
-        else:
-            os.environ["PYTHONHASHSEED"] = previous
+    path_entries = [str(ROOT), *filter(None, [os.environ.get("PYTHONPATH")])]
+    env = {  # the kernel's environment: this process's, plus
+        **os.environ,
+        "PYTHONHASHSEED": KERNEL_HASH_SEED,
+        "PYTHONPATH": os.pathsep.join(path_entries),
+    }
+    NotebookClient(
+        nb,
+        timeout=timeout,
+        kernel_name="python3",
+        record_timing=False,
+        extra_arguments=[f"--ext={KERNEL_EXTENSION}"],
+        shutdown_kernel="immediate",
+        resources={"metadata": {"path": str(cwd)}},
+    ).execute(env=env)
     return normalise(nb)
 
 

@@ -230,6 +230,31 @@ def test_execution_is_reproducible(tmp_path):
     assert "<title>demo</title>" in first
 
 
+def test_the_kernel_gives_latex_outputs_no_pretty_print_and_the_page_is_the_same(tmp_path):
+    """The build's kernel (pipeline.notebook_kernel) stores a SymPy output's LaTeX as its plain
+    text; the page shows the LaTeX either way (nbconvert's display priority), so it is the same
+    page as with SymPy's 2-D pretty print. An output without LaTeX keeps its plain text."""
+    code = "import sympy as sp\nsp.init_printing(use_latex='mathjax')\nx = sp.Symbol('x')\n"
+    cells = [new_code_cell(code), new_code_cell("sp.sqrt(x) / 2"), new_code_cell("object()")]
+    nb = new_notebook(cells=cells)
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
+    path = tmp_path / "demo.ipynb"
+    nbformat.write(nb, path)
+    executed = NH.execute(path, tmp_path)
+    (latex_out,), (plain_out,) = executed.cells[1].outputs, executed.cells[2].outputs
+    assert latex_out.data["text/latex"] == r"$\displaystyle \frac{\sqrt{x}}{2}$"
+    assert latex_out.data["text/plain"] == latex_out.data["text/latex"]  # the extension ran
+    assert plain_out.data == {"text/plain": "<object at 0x1>"}
+    page = NH.to_html(executed, "demo")
+    latex_out.data["text/plain"] = "  ___\n\u2572\u2571 x \n\u2500\u2500\u2500\u2500\u2500\n  2  "
+    assert NH.to_html(executed, "demo") == page
+    assert "<msqrt>" in page
+
+
 # --------------------------------------------------------------------------- code cells
 
 _TRICKY_CODE = (
