@@ -4,9 +4,9 @@ A SymPy object displayed in a notebook (``sp.init_printing``) gets two represent
 LaTeX (``text/latex``) and a 2-D pretty print (``text/plain``). The exported page shows one
 representation per output, the first of nbconvert's display priority, which lists
 ``text/latex`` before ``text/plain``: the pretty print of an output that has LaTeX is never
-on the page. Printing it took 0.15-0.55 CPU-s per notebook (measured in-process: north_finding
-0.26-0.31, platform_drift 0.15, altimeter_attitude 0.52-0.54), against 0.06-0.08 s for the LaTeX,
-which is now computed twice (once here, once by the ``text/latex`` formatter).
+on the page. Printing it took 0.15-0.54 CPU-s per notebook of this project (measured
+in-process), against 0.06-0.08 s for the LaTeX, which is now computed twice (once here, once by
+the ``text/latex`` formatter).
 
 Loaded by :func:`pipeline.notebook_html.execute` only (``--ext``), this extension makes the
 kernel's ``text/plain`` formatter return an object's LaTeX, unchanged, when the ``text/latex``
