@@ -36,6 +36,7 @@ pipeline.notebook_html.MathConversionError: cannot convert the LaTeX '\\\\frob x
 from __future__ import annotations
 
 import contextlib
+import copy
 import os
 import re
 from collections.abc import Iterator
@@ -52,7 +53,11 @@ from nbconvert.filters.markdown_mistune import IPythonRenderer, MarkdownWithMath
 from nbconvert.filters.strings import clean_html
 from nbconvert.preprocessors import CoalesceStreamsPreprocessor
 
+from pipeline import notebook_kernel
+from pipeline.mathml_soup import soup_form
+
 __all__ = [
+    "KERNEL_EXTENSION",
     "KERNEL_HASH_SEED",
     "MathConversionError",
     "OfflineHTMLExporter",
@@ -68,6 +73,11 @@ __all__ = [
 
 #: ``PYTHONHASHSEED`` of the kernel that executes a notebook (set and dict order reproducible)
 KERNEL_HASH_SEED = "0"
+#: the IPython extension the kernel that executes a notebook loads (see :func:`execute`;
+#: imported here too, so that the notebook jobs' code inputs include it)
+KERNEL_EXTENSION = notebook_kernel.__name__
+#: the repository (on the kernel's ``PYTHONPATH``, for :data:`KERNEL_EXTENSION`)
+ROOT = Path(__file__).resolve().parents[1]
 
 
 class MathConversionError(ValueError):
@@ -135,13 +145,14 @@ class _MathMLRenderer(IPythonRenderer):
     """nbconvert's markdown renderer with the mathematics as MathML; a formula that cannot be
     converted is recorded in ``problems`` (and the build fails on it, see ``to_html``)."""
 
-    def __init__(self, problems: list[str], **kw) -> None:
+    def __init__(self, problems: list[str], places: _Places, **kw) -> None:
         super().__init__(**kw)
         self.problems = problems
+        self.places = places  # the exporter's: MathML -> what goes into the page for now
 
     def _math(self, tex: str, display: bool) -> str:
         try:
-            return latex_to_mathml(tex, display=display)
+            return self.places.place(latex_to_mathml(tex, display=display))
         except MathConversionError as exc:
             self.problems.append(f"markdown: {exc}")
             return f"<code>{self.escape_html(tex)}</code>"
@@ -154,6 +165,11 @@ class _MathMLRenderer(IPythonRenderer):
 
     def latex_environment(self, name: str, body: str) -> str:
         return self._math(f"\\begin{{{name}}}{body}\\end{{{name}}}", display=True)
+
+    def heading(self, text: str, level: int, **attrs) -> str:
+        # nbconvert's anchor link (add_anchor) rebuilds a heading with ElementTree, which drops
+        # comments: a heading's formulas go in as MathML (ElementTree rewrites them)
+        return super().heading(self.places.unplace(text), level, **attrs)
 
 
 # lab's index.html.j2 without its scripts (require.js, MathJax, mermaid, widget manager), with
@@ -206,9 +222,68 @@ def clean_code_html(html: str) -> str:
     return html if _PYGMENTS_HTML.fullmatch(html) else clean_html(html)
 
 
+#: a formula's place in the page while BeautifulSoup re-serialises it (see OfflineHTMLExporter)
+_SLOT = "offline-mathml-slot-"
+_SLOTS = re.compile(rf"<!--{_SLOT}(\d+)-->|<(/?)(?:pre|textarea)\b|{_SLOT}")
+
+
+class _Places:
+    """The formulas of one export that wait outside the page while BeautifulSoup rewrites it."""
+
+    def __init__(self, active: bool) -> None:
+        self.active = active
+        self.mathml: list[str] = []  # as converted
+        self.forms: list[str | None] = []  # as BeautifulSoup writes them (None: put back)
+
+    def place(self, mathml: str) -> str:
+        form = soup_form(mathml) if self.active else None
+        if form is None:
+            return mathml  # BeautifulSoup writes this one itself
+        self.mathml.append(mathml)
+        self.forms.append(form)
+        return f"<!--{_SLOT}{len(self.forms) - 1}-->"
+
+    def unplace(self, html: str) -> str:
+        """``html`` (a fragment) with its formulas put back as converted."""
+
+        def back(m: re.Match) -> str:
+            i = int(m[1])
+            self.forms[i] = None
+            return self.mathml[i]
+
+        return re.sub(rf"<!--{_SLOT}(\d+)-->", back, html)
+
+    def put_back(self, html: str) -> str | None:
+        """``html`` with each place replaced by its formula as BeautifulSoup writes it, or None
+        if the places are not each there once, in order, outside ``<pre>`` and ``<textarea>``,
+        or something else carries the marker."""
+        expected = iter([i for i, form in enumerate(self.forms) if form is not None])
+        parts, pos, depth = [], 0, 0
+        for m in _SLOTS.finditer(html):
+            if m[1] is None and m[2] is None:
+                return None  # the marker outside a place (in the notebook, or rewritten)
+            if m[1] is None:
+                depth += -1 if m[2] else 1
+                continue
+            if int(m[1]) != next(expected, None) or depth > 0:
+                return None
+            parts += [html[pos : m.start()], self.forms[int(m[1])]]
+            pos = m.end()
+        return "".join([*parts, html[pos:]]) if next(expected, None) is None else None
+
+
 class OfflineHTMLExporter(HTMLExporter):
     """HTMLExporter (``lab`` template, images embedded) whose page loads nothing: mathematics
-    as MathML, no scripts. ``problems`` lists the formulas the last export could not convert."""
+    as MathML, no scripts. ``problems`` lists the formulas the last export could not convert.
+
+    nbconvert ends an export by parsing the page with BeautifulSoup and writing it back. The
+    MathML, about half of a page's tags and of that pass's time, goes through it as a comment
+    naming its place (``<!--offline-mathml-slot-<i>-->``, kept as it is), and is put back
+    afterwards in the form BeautifulSoup would have written (:func:`pipeline.mathml_soup.\
+soup_form`): the same page. If a place did not come back exactly once, in order and outside
+    ``<pre>``, or the notebook itself contains the marker, the page is exported again with the
+    MathML in it (``tests/shared/test_notebook_html.py`` compares both ways on the papers'
+    notebooks)."""
 
     def __init__(self, **kw) -> None:
         kw.setdefault("embed_images", True)
@@ -219,12 +294,26 @@ class OfflineHTMLExporter(HTMLExporter):
             **kw,
         )
         self.problems: list[str] = []
+        self._places = _Places(active=False)
+
+    def from_notebook_node(self, nb, resources=None, **kw):
+        self._places = _Places(active=True)
+        try:
+            html, out = super().from_notebook_node(nb, copy.deepcopy(resources), **kw)
+            page = self._places.put_back(html)
+        finally:
+            self._places = _Places(active=False)
+        if page is None:
+            self.problems.clear()
+            page, out = super().from_notebook_node(nb, resources, **kw)
+        return page, out
 
     @pass_context
     def markdown2html(self, context, source):
         cell = context.get("cell", {})
         renderer = _MathMLRenderer(
             self.problems,
+            self._places,
             escape=False,
             attachments=cell.get("attachments", {}),
             embed_images=self.embed_images,
@@ -237,7 +326,7 @@ class OfflineHTMLExporter(HTMLExporter):
 
     def _latex_output(self, latex: str) -> str:
         try:
-            return output_latex_to_mathml(latex)
+            return self._places.place(output_latex_to_mathml(latex))
         except MathConversionError as exc:
             self.problems.append(f"output: {exc}")
             return "<pre>" + latex.replace("&", "&amp;").replace("<", "&lt;") + "</pre>"
@@ -333,7 +422,12 @@ def wall_clock_reads(nb: nbformat.NotebookNode) -> list[str]:
 def execute(path: str | os.PathLike[str], cwd: str | os.PathLike[str] = ".", timeout: int = 600):
     """Execute the notebook at ``path`` in a fresh python3 kernel whose working directory is
     ``cwd`` and whose ``PYTHONHASHSEED`` is :data:`KERNEL_HASH_SEED`; return it, normalised.
-    A notebook that reads the clock is refused (its page would differ between runs)."""
+    A notebook that reads the clock is refused (its page would differ between runs).
+
+    The kernel starts with :mod:`pipeline.notebook_kernel` loaded (no pretty-printed plain
+    text for an output the page shows as LaTeX; the repository is put on its ``PYTHONPATH``
+    to import it) and is killed once the last cell has run: everything the page shows has
+    arrived by then, and an orderly exit spent ~1 CPU-s tearing down the SymPy objects."""
     nb = nbformat.read(path, as_version=4)
     clock = wall_clock_reads(nb)
     if clock:
@@ -341,21 +435,21 @@ def execute(path: str | os.PathLike[str], cwd: str | os.PathLike[str] = ".", tim
             f"{path}: reads the clock, so its page would differ between runs (the workflow "
             "records run times in the rule's benchmark file):\n  " + "\n  ".join(clock)
         )
-    previous = os.environ.get("PYTHONHASHSEED")
-    os.environ["PYTHONHASHSEED"] = KERNEL_HASH_SEED  # the kernel inherits this environment
-    try:
-        NotebookClient(
-            nb,
-            timeout=timeout,
-            kernel_name="python3",
-            record_timing=False,
-            resources={"metadata": {"path": str(cwd)}},
-        ).execute()
-    finally:
-        if previous is None:
-            os.environ.pop("PYTHONHASHSEED", None)
-        else:
-            os.environ["PYTHONHASHSEED"] = previous
+    path_entries = [str(ROOT), *filter(None, [os.environ.get("PYTHONPATH")])]
+    env = {  # the kernel's environment: this process's, plus
+        **os.environ,
+        "PYTHONHASHSEED": KERNEL_HASH_SEED,
+        "PYTHONPATH": os.pathsep.join(path_entries),
+    }
+    NotebookClient(
+        nb,
+        timeout=timeout,
+        kernel_name="python3",
+        record_timing=False,
+        extra_arguments=[f"--ext={KERNEL_EXTENSION}"],
+        shutdown_kernel="immediate",
+        resources={"metadata": {"path": str(cwd)}},
+    ).execute(env=env)
     return normalise(nb)
 
 

@@ -230,6 +230,31 @@ def test_execution_is_reproducible(tmp_path):
     assert "<title>demo</title>" in first
 
 
+def test_the_kernel_gives_latex_outputs_no_pretty_print_and_the_page_is_the_same(tmp_path):
+    """The build's kernel (pipeline.notebook_kernel) stores a SymPy output's LaTeX as its plain
+    text; the page shows the LaTeX either way (nbconvert's display priority), so it is the same
+    page as with SymPy's 2-D pretty print. An output without LaTeX keeps its plain text."""
+    code = "import sympy as sp\nsp.init_printing(use_latex='mathjax')\nx = sp.Symbol('x')\n"
+    cells = [new_code_cell(code), new_code_cell("sp.sqrt(x) / 2"), new_code_cell("object()")]
+    nb = new_notebook(cells=cells)
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
+    path = tmp_path / "demo.ipynb"
+    nbformat.write(nb, path)
+    executed = NH.execute(path, tmp_path)
+    (latex_out,), (plain_out,) = executed.cells[1].outputs, executed.cells[2].outputs
+    assert latex_out.data["text/latex"] == r"$\displaystyle \frac{\sqrt{x}}{2}$"
+    assert latex_out.data["text/plain"] == latex_out.data["text/latex"]  # the extension ran
+    assert plain_out.data == {"text/plain": "<object at 0x1>"}
+    page = NH.to_html(executed, "demo")
+    latex_out.data["text/plain"] = "  ___\n\u2572\u2571 x \n\u2500\u2500\u2500\u2500\u2500\n  2  "
+    assert NH.to_html(executed, "demo") == page
+    assert "<msqrt>" in page
+
+
 # --------------------------------------------------------------------------- code cells
 
 _TRICKY_CODE = (
@@ -273,3 +298,45 @@ def test_other_markup_goes_through_bleach(html):
 
     assert not NH._PYGMENTS_HTML.fullmatch(html)
     assert NH.clean_code_html(html) == clean_html(html)
+
+
+# --------------------------------------------------------------------------- MathML placed
+
+
+@pytest.mark.parametrize(
+    "markdown",
+    [
+        "# Heading with $\\tau$\n\ntext $x^2$ and $$\\frac{a}{b} < c$$",
+        "<pre>$x$ in pre</pre>\n\n$y$ and `$z$` and <!--offline-mathml-slot-0-->",
+        "![alt $\\alpha$](x.png) and $\\sin \\theta$",
+    ],
+)
+def test_mathml_kept_out_of_beautifulsoup_gives_the_same_page(markdown, monkeypatch):
+    """The formulas kept out of nbconvert's BeautifulSoup pass (pipeline.mathml_soup) come back
+    as it would have written them: the same page as with every formula going through it."""
+    nb = _notebook()
+    nb.cells.insert(1, new_markdown_cell(markdown))
+    nb.cells[1].id = "markdown-2"
+    fast = NH.to_html(NH.normalise(nb), "demo")
+    monkeypatch.setattr(NH, "soup_form", lambda mathml: None)
+    assert NH.to_html(NH.normalise(nb), "demo") == fast
+
+
+@pytest.mark.parametrize(
+    "tex",
+    [
+        r"\tilde a_x = 2 g \sin\theta",
+        r"\left[\begin{matrix}\cos{\left(\psi \right)} & 0\\ 0 & 1\end{matrix}\right]",
+        r"a < b \quad c > d \quad \operatorname{tr}\,P \mathrm{(13a)} \; \mathbf{x}",
+        r"\sum_{i=1}^{n} \frac{\partial f}{\partial x_i} \hat{\omega}_{x,\max} \dot{\omega}",
+        r"\sqrt[3]{x} \overline{z}_1 \text{a \& b}",
+    ],
+)
+def test_soup_form_is_what_beautifulsoup_writes(tex):
+    from bs4 import BeautifulSoup
+
+    from pipeline.mathml_soup import soup_form
+
+    for display in (False, True):
+        mathml = NH.latex_to_mathml(tex, display=display)
+        assert soup_form(mathml) == str(BeautifulSoup(mathml, features="html.parser"))
