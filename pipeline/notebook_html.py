@@ -41,6 +41,7 @@ import os
 import re
 from collections.abc import Iterator
 from pathlib import Path
+from urllib.parse import quote
 
 import nbformat
 from docutils.utils.math import MathError
@@ -141,6 +142,18 @@ def output_latex_to_mathml(latex: str) -> str:
 # --------------------------------------------------------------------------- the exporter
 
 
+#: one formula of the page (as latex_to_mathml writes it), and a heading's stand-in for one
+_MATHML = re.compile(r"<math\b.*?</math>", re.S)
+#: (ASCII: ElementTree writes other characters as &#...;; with spaces: in the id it reads
+#: otherwise, with dashes)
+_HEADING_TOKEN = "@@offline mathml {}@@"
+
+
+def _header_id(text: str) -> str:
+    """A heading's id as nbconvert makes it from the heading's text (its _convert_header_id)."""
+    return quote(text.replace(" ", "-"), safe="?/:@!$&'()*+,;=")
+
+
 class _MathMLRenderer(IPythonRenderer):
     """nbconvert's markdown renderer with the mathematics as MathML; a formula that cannot be
     converted is recorded in ``problems`` (and the build fails on it, see ``to_html``)."""
@@ -168,8 +181,25 @@ class _MathMLRenderer(IPythonRenderer):
 
     def heading(self, text: str, level: int, **attrs) -> str:
         # nbconvert's anchor link (add_anchor) rebuilds a heading with ElementTree, which drops
-        # comments: a heading's formulas go in as MathML (ElementTree rewrites them)
-        return super().heading(self.places.unplace(text), level, **attrs)
+        # comments, writes MathML with a namespace prefix (<ns0:math>: no formula to a browser)
+        # and takes the heading's id from its text, the line breaks of the formulas' markup
+        # included. So each formula goes through it as a token, then becomes its MathML again
+        # in the heading and its text (no spaces) in the id and the anchor's link.
+        formulas: list[str] = []
+
+        def tokenise(m: re.Match) -> str:
+            formulas.append(m[0])
+            return _HEADING_TOKEN.format(len(formulas) - 1)
+
+        text = self.places.unplace(text)
+        if "@@offline mathml" in text:  # (the notebook's own text: left as it is)
+            return super().heading(text, level, **attrs)
+        html = super().heading(_MATHML.sub(tokenise, text), level, **attrs)
+        for i, mathml in enumerate(formulas):
+            token = _HEADING_TOKEN.format(i)
+            plain = "".join(re.sub(r"<[^>]+>", "", mathml).split())
+            html = html.replace(_header_id(token), _header_id(plain)).replace(token, mathml)
+        return html
 
 
 # lab's index.html.j2 without its scripts (require.js, MathJax, mermaid, widget manager), with

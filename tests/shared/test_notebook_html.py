@@ -340,3 +340,24 @@ def test_soup_form_is_what_beautifulsoup_writes(tex):
     for display in (False, True):
         mathml = NH.latex_to_mathml(tex, display=display)
         assert soup_form(mathml) == str(BeautifulSoup(mathml, features="html.parser"))
+
+
+@pytest.mark.parametrize("soup_shortcut", [True, False])
+def test_a_heading_keeps_its_formulas_as_mathml(soup_shortcut, monkeypatch):
+    """A formula in a heading is MathML in the page (nbconvert's anchor link, rebuilt with
+    ElementTree, used to write it as <ns0:math>, which a browser does not render), and the
+    heading's id and link hold the formula's text, not its markup's line breaks."""
+    if not soup_shortcut:
+        monkeypatch.setattr(NH, "soup_form", lambda mathml: None)
+    nb = new_notebook(
+        cells=[new_markdown_cell("### Method 1 (eq. 19): at $\\tau$ = 0°, $n \\ge 3$ runs\n\n$a$")]
+    )
+    page = NH.to_html(NH.normalise(nb), "demo")
+    assert "ns0" not in page
+    m = re.search(r'<h3 id="([^"]+)">(.*?)<a class="anchor-link" href="#([^"]+)">', page, re.S)
+    assert m, page[-3000:]
+    anchor, heading, link = m.groups()
+    assert anchor == link == "Method-1-(eq.-19):-at-%CF%84-=-0%C2%B0,-n%E2%89%A53-runs"
+    assert heading.count('<math xmlns="http://www.w3.org/1998/Math/MathML">') == 2
+    assert "<mi>τ</mi>" in heading and "<mo>≥</mo>" in heading
+    assert heading.startswith("Method 1 (eq. 19): at <math")
