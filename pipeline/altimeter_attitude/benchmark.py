@@ -181,6 +181,9 @@ def ukf_vs_filterpy(sc, inputs: Inputs, repeats: int) -> float:
 
 def child(scenario: Path, n_runs: int) -> int:
     """One full Monte Carlo (run_scenario into a temporary directory); prints JSON."""
+    from pipeline.altimeter_attitude.heap import keep_freed_memory
+
+    keep_freed_memory()  # as the workflow's steps do
     cpu0, wall0 = time.process_time(), time.perf_counter()
     with tempfile.TemporaryDirectory() as tmp:
         run.run_scenario(scenario, tmp, n_runs, log=lambda m: None)
