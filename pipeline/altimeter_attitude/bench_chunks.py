@@ -113,8 +113,10 @@ def main(argv: list[str] | None = None) -> int:
     """The child processes: ``chunk <scenario> <runs> <chunk_runs> <index> <file>`` and
     ``merge <scenario> <runs> <chunk_runs> <out_dir> <file>...``."""
     from pipeline.altimeter_attitude import chunks
+    from pipeline.altimeter_attitude.heap import keep_freed_memory
     from pipeline.altimeter_attitude.run import write_results
 
+    keep_freed_memory()  # as the workflow's steps do (pipeline/altimeter_attitude/steps.py)
     mode, path, n_runs, chunk_runs, *rest = argv if argv is not None else sys.argv[1:]
     sc = sized_scenario(path, int(n_runs), int(chunk_runs))
     if mode == "chunk":

@@ -43,7 +43,14 @@ GB per process, <= 2.48 GB together. After the estimates' post-processing by sli
 (commit c3edbc8, load average 3-4): chunks 192.6 and 200.4, merge 2.7, 395.6 CPU-s in all
 (3.96 us per run-step), wall 631 s, 1.31 GB per process, <= 2.37 GB together. Memory met;
 wall NOT met as measured (the load; on 2 idle cores it would be about the larger chunk plus
-the merge, ~200 s, not measured); CPU on one core NOT met.
+the merge, ~200 s, not measured); CPU on one core NOT met. With freed memory kept for the
+next block (:mod:`pipeline.altimeter_attitude.heap`) and the angle wrap without fmod
+(mc_sums._accumulate), measured alternately with the same code without them (commit
+b26be45), two pairs on the shared machine: 413.3 and 395.9 CPU-s before (chunks 198.1 + 212.0,
+192.7 + 199.9, merges 3.3), 351.2 and 337.4 after (171.8 + 177.2, 163.5 + 170.6; merges 2.2,
+3.3): 3.37-3.51 us per run-step, -15 %; peak RSS 1.33-1.40 GB per process (1.05-1.32
+before), <= 2.73 GB together. Wall 303 s after (load average ~3), 228 s before (a quieter
+spell): loads differed, not comparable. One core: still NOT met (337-351 > 300 CPU-s).
 """
 
 from __future__ import annotations
@@ -181,6 +188,9 @@ def ukf_vs_filterpy(sc, inputs: Inputs, repeats: int) -> float:
 
 def child(scenario: Path, n_runs: int) -> int:
     """One full Monte Carlo (run_scenario into a temporary directory); prints JSON."""
+    from pipeline.altimeter_attitude.heap import keep_freed_memory
+
+    keep_freed_memory()  # as the workflow's steps do
     cpu0, wall0 = time.process_time(), time.perf_counter()
     with tempfile.TemporaryDirectory() as tmp:
         run.run_scenario(scenario, tmp, n_runs, log=lambda m: None)

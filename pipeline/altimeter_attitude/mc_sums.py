@@ -58,13 +58,18 @@ def _accumulate(
     start the mean square error ``run_ms`` (N, F, 2); per run the trouble kinds ``flags``
     (non-finite, diverged beyond ``far`` rad, sigma not positive); ``any_sigma`` = (some roll
     sigma not NaN, some roll or pitch sigma not NaN). Errors wrapped as metrics.angle_errors:
-    e = (est - true + pi) mod 2 pi - pi."""
+    e = (est - true + pi) mod 2 pi - pi, the mod taken as the argument itself where it lies in
+    (0, 2 pi): what Python's (and numba's) float ``%`` returns there (fmod is exact; a nonzero
+    result with the divisor's sign is kept), without the call to libm's fmod (~1/2 of this
+    kernel's time); anything else (0, -0, NaN, out of range) takes ``%``."""
     n, t1 = roll.shape
     pi, two_pi = np.pi, 2 * np.pi
     for i in range(n):
         for k in range(t1):
-            er = (roll[i, k] - t_roll[k] + pi) % two_pi - pi
-            ep = (pitch[i, k] - t_pitch[k] + pi) % two_pi - pi
+            ar = roll[i, k] - t_roll[k] + pi
+            ap = pitch[i, k] - t_pitch[k] + pi
+            er = (ar if 0.0 < ar < two_pi else ar % two_pi) - pi
+            ep = (ap if 0.0 < ap < two_pi else ap % two_pi) - pi
             sr, sp = rs[i, k], ps[i, k]
             qr, qp = er / sr, ep / sp
             d0, d1, d2 = c[i, k, 0] - t_c[k, 0], c[i, k, 1] - t_c[k, 1], c[i, k, 2] - t_c[k, 2]

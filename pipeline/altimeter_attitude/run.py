@@ -350,6 +350,9 @@ def main(argv: list[str] | None = None) -> int:
     def log(message: str) -> None:
         print(message, file=sys.stderr, flush=True)
 
+    from pipeline.altimeter_attitude.heap import keep_freed_memory
+
+    keep_freed_memory()  # as the workflow's step does
     run_scenario(sc, args.out_dir, args.runs, log=log)
     return 0
 

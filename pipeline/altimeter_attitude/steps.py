@@ -2,7 +2,8 @@
 ``step(inputs, outputs, params, log)`` (named paths as declared in
 :mod:`pipeline.altimeter_attitude.paper`). The figure steps are
 :func:`pipeline.altimeter_attitude.figures.figures_step` and
-:func:`pipeline.altimeter_attitude.figures_sweep.sweep_figure_step`."""
+:func:`pipeline.altimeter_attitude.figures_sweep.sweep_figure_step`. The Monte Carlo steps
+first keep freed memory for reuse (:func:`pipeline.altimeter_attitude.heap.keep_freed_memory`)."""
 
 from __future__ import annotations
 
@@ -16,9 +17,11 @@ def simulate(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) 
     """One scenario: the Monte Carlo of every filter, in this job, or merged from the chunk
     jobs' files (``chunks``: none unless the scenario sets ``monte_carlo.chunk_runs``)."""
     from pipeline.altimeter_attitude.chunks import merge_chunks
+    from pipeline.altimeter_attitude.heap import keep_freed_memory
     from pipeline.altimeter_attitude.run import run_scenario, write_results
     from pipeline.altimeter_attitude.scenario import load_scenario
 
+    keep_freed_memory()
     out_dir = Path(outputs["rms_summary"]).parent
     if not inputs["chunks"]:
         run_scenario(inputs["scenario"], out_dir, log=log)
@@ -31,8 +34,10 @@ def simulate(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) 
 def simulate_chunk(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
     """One chunk of a scenario's Monte Carlo: its block sums (pipeline/altimeter_attitude/chunks.py)."""
     from pipeline.altimeter_attitude.chunks import chunk_bounds, simulate_chunk, write_chunk
+    from pipeline.altimeter_attitude.heap import keep_freed_memory
     from pipeline.altimeter_attitude.scenario import load_scenario
 
+    keep_freed_memory()
     sc = load_scenario(inputs["scenario"])
     index = int(params["wildcards"]["chunk"])
     bounds = chunk_bounds(sc.n_runs, sc.chunk_runs)
@@ -44,12 +49,14 @@ def simulate_chunk(inputs: Mapping, outputs: Mapping, params: Mapping, log: Call
 def sweep(inputs: Mapping, outputs: Mapping, params: Mapping, log: Callable) -> None:
     """The one-at-a-time sensitivity sweep around the base scenario."""
     from pipeline.altimeter_attitude.columns import SWEEP_COLUMNS
+    from pipeline.altimeter_attitude.heap import keep_freed_memory
     from pipeline.altimeter_attitude.scenario import load_scenario
     from pipeline.altimeter_attitude.sweep import run_sweep
     from pipeline.altimeter_attitude.trouble import trouble_frame
     from pipeline.atomic import write_csv
     from pipeline.trouble import TROUBLE_COLUMNS
 
+    keep_freed_memory()
     settings = params["sweep"]
     trouble: list[tuple] = []
     frame = run_sweep(

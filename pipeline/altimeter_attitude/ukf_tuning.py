@@ -130,9 +130,11 @@ def spread(frame: pd.DataFrame, column: str) -> tuple[float, float]:
 
 def tuning_step(inputs: Any, outputs: Any, params: Any, log: Any) -> None:
     """Workflow step: the grid of ``params["ukf_tuning"]`` on ``inputs["scenario"]``."""
+    from pipeline.altimeter_attitude.heap import keep_freed_memory
     from pipeline.altimeter_attitude.scenario import load_scenario
     from pipeline.atomic import write_csv
 
+    keep_freed_memory()
     grid = params["ukf_tuning"]
     frame = run_tuning(
         load_scenario(inputs["scenario"]),

@@ -139,3 +139,30 @@ def test_trouble_counts_equal_estimates_trouble_across_blocks(short):
     assert sums.trouble_rows() == want
     counts = {r[3]: r[5] for r in want[:3]}
     assert counts == {"non_finite": 1, "diverged": 1, "sigma_not_positive": 1}
+
+
+def test_accumulated_errors_are_the_float_mod_bit_for_bit():
+    """_accumulate's wrapped errors (the argument itself where it lies in (0, 2 pi), ``%``
+    elsewhere) are, bit for bit, ``(x + pi) % (2 pi) - pi`` of Python floats, at the edges
+    too (0, -0, 2 pi, +-inf, NaN, far out of range)."""
+    import math
+
+    from pipeline.altimeter_attitude.mc_sums import _accumulate
+
+    rng = np.random.default_rng(7)
+    edges = [0.0, -0.0, math.pi, -math.pi, 2 * math.pi, -2 * math.pi, math.inf, -math.inf]
+    edges += [math.nan, 1e-300, -1e-300, 3 * math.pi, 1e6, -1e6, math.nextafter(math.pi, 0.0)]
+    est = np.concatenate([edges, rng.uniform(-20.0, 20.0, 2000)])
+    n = est.size
+    roll = est.reshape(1, n)
+    ones = np.ones((1, n))
+    block = np.zeros((10, n))
+    run_ms = np.zeros((1, 1, 2))
+    flags = np.zeros((1, 3), dtype=bool)
+    _accumulate(
+        roll, roll, ones, ones, np.zeros((1, n, 3)), np.zeros((1, n)), np.zeros(n), np.zeros(n),
+        np.zeros((n, 3)), np.zeros(1, dtype=np.int64), 1.0, block, run_ms, flags,
+        np.zeros(2, dtype=bool),
+    )  # fmt: skip
+    err = [(x + math.pi) % (2 * math.pi) - math.pi for x in est.tolist()]  # Python floats
+    assert block[0].tobytes() == np.array([e * e for e in err]).tobytes()
