@@ -205,6 +205,19 @@ def test_a_notebook_reading_the_clock_is_refused(tmp_path):
         NH.execute(path, tmp_path)
 
 
+def _python_notebook(directory, cells):
+    """``directory/demo.ipynb`` holding ``cells``, for the python3 kernel."""
+    nb = new_notebook(cells=cells)
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
+    path = directory / "demo.ipynb"
+    nbformat.write(nb, path)
+    return path
+
+
 def test_execution_is_reproducible(tmp_path):
     """Two executions in fresh kernels give the same page: set order (PYTHONHASHSEED), object
     addresses and stream splitting are fixed by the build."""
@@ -216,14 +229,7 @@ def test_execution_is_reproducible(tmp_path):
         "print('after flush')\n"
         "object()"
     )
-    nb = new_notebook(cells=[new_markdown_cell("# Demo $x^2$"), new_code_cell(code)])
-    nb.metadata["kernelspec"] = {
-        "name": "python3",
-        "display_name": "Python 3",
-        "language": "python",
-    }
-    path = tmp_path / "demo.ipynb"
-    nbformat.write(nb, path)
+    path = _python_notebook(tmp_path, [new_markdown_cell("# Demo $x^2$"), new_code_cell(code)])
     first, second = NH.build(path, tmp_path), NH.build(path, tmp_path)
     assert first == second
     assert "after flush" in first and "&lt;object at 0x1&gt;" in first
@@ -236,14 +242,7 @@ def test_the_kernel_gives_latex_outputs_no_pretty_print_and_the_page_is_the_same
     page as with SymPy's 2-D pretty print. An output without LaTeX keeps its plain text."""
     code = "import sympy as sp\nsp.init_printing(use_latex='mathjax')\nx = sp.Symbol('x')\n"
     cells = [new_code_cell(code), new_code_cell("sp.sqrt(x) / 2"), new_code_cell("object()")]
-    nb = new_notebook(cells=cells)
-    nb.metadata["kernelspec"] = {
-        "name": "python3",
-        "display_name": "Python 3",
-        "language": "python",
-    }
-    path = tmp_path / "demo.ipynb"
-    nbformat.write(nb, path)
+    path = _python_notebook(tmp_path, cells)
     executed = NH.execute(path, tmp_path)
     (latex_out,), (plain_out,) = executed.cells[1].outputs, executed.cells[2].outputs
     assert latex_out.data["text/latex"] == r"$\displaystyle \frac{\sqrt{x}}{2}$"
