@@ -21,9 +21,11 @@ fresh clone has, and ``make workflow`` (what ``make reproduce`` runs after set-u
 Snakemake report included) runs there with this checkout's ``.venv`` on 2 cores. It prints the
 wall time, the CPU seconds of every process it started, the load average before and after
 (the wall time holds only on an idle machine), the per-step table of that run and its no-op
-rerun. Snakemake samples a job's CPU time every 0.5 s for its first 15 s, then every 30 s, and
-not at its end, so the per-step CPU seconds under-count short jobs, and long ones (starred in
-the table: a loaded machine); the total is exact (``getrusage`` of the children).
+rerun. The jobs ``make reproduce`` runs itself have their exact CPU time in their benchmark
+files (``pipeline/exact_benchmark.py``: the kernel's count when the job's shell is reaped); a
+job run by an unpatched Snakemake (on a cluster node) has its CPU time sampled every 0.5 s for
+its first 15 s, then every 30 s, and not at its end: an under-count, large for a job longer
+than 15 s (starred in the table). The total is exact (``getrusage`` of the children).
 
 ``--baseline DIR`` adds the same columns for another results directory (e.g. a checkout
 before a change) and the difference. The timings are of this machine and this run; they are
@@ -58,9 +60,9 @@ __all__ = [
 
 #: issue 15's targets, seconds
 FULL_RUN_TARGET_S = 60.0
-#: Snakemake (9.27.1, snakemake/benchmark.py) samples a job's CPU time every 0.5 s for its
-#: first 30 samples, then every 30 s, and not at its end: the CPU a longer job spends after its
-#: last sample is missing from its benchmark file
+#: an unpatched Snakemake (9.27.1, snakemake/benchmark.py; a cluster node's) samples a job's
+#: CPU time every 0.5 s for its first 30 samples, then every 30 s, and not at its end: the CPU a
+#: longer job spends after its last sample is missing from its benchmark file
 SAMPLED_DENSELY_S = 15.0
 NOOP_TARGET_S = 3.0
 CORES = 2
@@ -160,8 +162,9 @@ def step_table(steps: list[StepTime], baseline: list[StepTime] | None = None) ->
     notes = []
     if any(s.longest_s > SAMPLED_DENSELY_S for s in steps):
         notes.append(
-            f"* a job ran longer than {SAMPLED_DENSELY_S:.0f} s of wall: Snakemake then samples "
-            "its CPU time every 30 s, so its CPU seconds are a lower bound (a loaded machine)"
+            f"* a job ran longer than {SAMPLED_DENSELY_S:.0f} s of wall: if it ran on a cluster "
+            "node, Snakemake there sampled its CPU time every 30 s, so its CPU seconds are a "
+            "lower bound (a local run's are exact)"
         )
     return "\n".join(lines + ["-" * len(head), foot, *notes])
 
