@@ -5,7 +5,10 @@
 #   make test       run the test suite            (PYTEST_ARGS="-k foo -x" to pass options;
 #                   TEST_WORKERS=2 pytest-xdist workers by default, 0 for one process);
 #                   first installs the system tools the report tests drive (system-deps)
-#   make reproduce  run the Snakemake workflow    (CORES=2 by default)
+#   make reproduce  run the Snakemake workflow    (CORES=2 by default), after warm-kernels
+#   make warm-kernels  compile the altimeter_attitude numba kernels into numba's cache, so that
+#                   the workflow's jobs load them (nothing to do when the cache is warm);
+#                   run by `make reproduce` and `make test`
 #   make reproduce-slurm  the same workflow on a SLURM cluster (profiles/slurm/: the executor
 #                   plugin submits the steps with sbatch; run it from a login node)
 #   make lint       ruff check + ruff format --check, snakefmt --check, snakemake --lint
@@ -49,7 +52,7 @@ SYSTEM_TOOLS := /usr/bin/chromium /usr/bin/pdftoppm /usr/bin/pdftotext /usr/bin/
 SYSTEM_PKGS  := chromium poppler-utils
 REQUIRE_SYSTEM_DEPS ?= 0
 
-.PHONY: venv reproduce reproduce-slurm check-slurm workflow snakemake-report test lint bench lock clean check-python system-deps
+.PHONY: venv warm-kernels reproduce reproduce-locked reproduce-slurm check-slurm workflow snakemake-report test lint bench lock clean check-python system-deps
 
 venv: $(PROJECT_STAMP)
 
@@ -104,13 +107,25 @@ CONFIG ?=
 CONFIG_ARGS := $(if $(strip $(CONFIG)),--configfile $(CONFIG))
 SLURM_PROFILE ?= profiles/slurm
 
+# numba's compile of the altimeter_attitude kernels (~11 CPU-s on an empty cache, else paid by
+# the workflow's first Monte Carlo jobs while the others wait on the cache's lock) as set-up:
+# pipeline/altimeter_attitude/warm_kernels.py runs the workflow's entry code on 2 runs and a short
+# flight. Phony, no stamp here: it keeps its own in the numba cache (removed by `make clean`), so
+# it costs ~0.1 CPU-s when the cache is warm; a failure is a warning (the jobs compile then).
+warm-kernels: $(PROJECT_STAMP)
+	@PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.altimeter_attitude.warm_kernels
+
 reproduce: $(PROJECT_STAMP)
 	@mkdir -p .snakemake
-	@flock -n -E 75 .snakemake/make-reproduce.lock $(MAKE) --no-print-directory workflow \
+	@flock -n -E 75 .snakemake/make-reproduce.lock $(MAKE) --no-print-directory reproduce-locked \
 		WORKFLOW_ARGS="$(WORKFLOW_ARGS)"; \
 	status=$$?; if [ $$status -eq 75 ]; then \
 		echo "error: another 'make reproduce' is running in $(CURDIR); wait for it to finish" >&2; \
 	fi; exit $$status
+
+# What `make reproduce` runs under its lock: the kernels' warm-up, then the workflow.
+reproduce-locked: warm-kernels
+	@$(MAKE) --no-print-directory workflow WORKFLOW_ARGS="$(WORKFLOW_ARGS)"
 
 # The same workflow and the same bytes, its steps submitted with sbatch (the short ones run here,
 # on the login node: localrules). The clone and .venv must be on a filesystem the nodes share.
@@ -189,7 +204,7 @@ system-deps:
 			"(install Debian's $(SYSTEM_PKGS))" >&2; \
 	fi
 
-test: $(PROJECT_STAMP) system-deps
+test: $(PROJECT_STAMP) system-deps warm-kernels
 	PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pytest -q -n $(TEST_WORKERS) --dist loadfile $(PYTEST_ARGS)
 
 bench: $(PROJECT_STAMP)

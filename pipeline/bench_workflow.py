@@ -17,8 +17,10 @@ issue's targets:
 ``--full-run`` measures the target itself instead of reading the last run's files: the
 checkout's files (tracked and untracked, not ignored; so uncommitted edits count) are copied
 to a temporary directory, with no results, no Snakemake state and an empty numba cache, as a
-fresh clone has, and ``make workflow`` (what ``make reproduce`` runs after set-up, the
-Snakemake report included) runs there with this checkout's ``.venv`` on 2 cores. It prints the
+fresh clone has; the set-up's numba warm-up (``make warm-kernels``:
+:mod:`pipeline.altimeter_attitude.warm_kernels`) runs there, timed apart, and then
+``make workflow`` (what ``make reproduce`` runs after set-up, the Snakemake report included)
+with this checkout's ``.venv`` on 2 cores. It prints the
 wall time, the CPU seconds of every process it started, the load average before and after
 (the wall time holds only on an idle machine), the per-step table of that run and its no-op
 rerun. The jobs ``make reproduce`` runs itself have their exact CPU time in their benchmark
@@ -65,6 +67,8 @@ FULL_RUN_TARGET_S = 60.0
 #: longer job spends after its last sample is missing from its benchmark file
 SAMPLED_DENSELY_S = 15.0
 NOOP_TARGET_S = 3.0
+#: the set-up's numba warm-up (``make warm-kernels``), run in the copy before a full run
+WARM_MODULE = "pipeline.altimeter_attitude.warm_kernels"
 CORES = 2
 
 
@@ -214,6 +218,8 @@ class FullRun:
     load_after: float
     returncode: int
     copy: Path
+    #: CPU seconds of the set-up's numba warm-up before the run (None: the copy has none)
+    warm_cpu_s: float | None = None
 
 
 def checkout_files(root: Path) -> list[str]:
@@ -238,6 +244,19 @@ def measure_full_run(root: Path, work: Path, cores: int = CORES) -> FullRun:
         shutil.copy2(root / rel, dest)
     venv = (root / ".venv").resolve()
     env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    warm_cpu = None
+    if (copy / WARM_MODULE.replace(".", "/")).with_suffix(".py").is_file():
+        # the module, not `make warm-kernels`, which would install the copy into this
+        # checkout's venv if its pyproject.toml were newer than the venv's stamp
+        before = _children_cpu()
+        subprocess.run(
+            [str(venv / "bin" / "python"), "-m", WARM_MODULE],
+            cwd=copy,
+            env={**env, "PYTHONPATH": str(copy)},
+            stdout=subprocess.DEVNULL,
+            check=False,
+        )
+        warm_cpu = _children_cpu() - before
     load_before = os.getloadavg()[0]
     cpu_before = _children_cpu()
     start = time.monotonic()
@@ -250,13 +269,22 @@ def measure_full_run(root: Path, work: Path, cores: int = CORES) -> FullRun:
     )
     wall = time.monotonic() - start
     return FullRun(
-        wall, _children_cpu() - cpu_before, load_before, os.getloadavg()[0], done.returncode, copy
+        wall,
+        _children_cpu() - cpu_before,
+        load_before,
+        os.getloadavg()[0],
+        done.returncode,
+        copy,
+        warm_cpu,
     )
 
 
 def _full_run_report(args: argparse.Namespace) -> int:
     with tempfile.TemporaryDirectory(prefix="bench-workflow-") as tmp:
-        print("full run from nothing (a copy of this checkout, make workflow, 2 cores) ...")
+        print(
+            "full run from nothing (a copy of this checkout, its set-up's numba warm-up, "
+            "make workflow, 2 cores) ..."
+        )
         run = measure_full_run(Path.cwd(), Path(tmp))
         if run.returncode != 0:
             print(f"error: make workflow failed in the copy (status {run.returncode})")
@@ -274,6 +302,11 @@ def _full_run_report(args: argparse.Namespace) -> int:
             f"CPU; load average {run.load_before:.2f} before, {run.load_after:.2f} after "
             "(the wall time holds for an idle machine only)"
         )
+        if run.warm_cpu_s is not None:
+            print(
+                f"          the set-up's numba warm-up before it: {run.warm_cpu_s:.1f} CPU-s "
+                "(not in the run's)"
+            )
         if args.noop_repeat:
             _print_noop(measure_noop(run.copy, args.noop_repeat, (Path.cwd() / ".venv").resolve()))
     return 0
