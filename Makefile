@@ -6,9 +6,9 @@
 #                   TEST_WORKERS=2 pytest-xdist workers by default, 0 for one process);
 #                   first installs the system tools the report tests drive (system-deps)
 #   make reproduce  run the Snakemake workflow    (CORES=2 by default), after warm-kernels
-#   make warm-kernels  compile the altimeter_attitude numba kernels into numba's cache, so that
-#                   the workflow's jobs load them (nothing to do when the cache is warm);
-#                   run by `make reproduce` and `make test`
+#   make warm-kernels  the papers' set-up work (pipeline/warm_up.py): altimeter_attitude's numba
+#                   kernels compiled into numba's cache, so that the workflow's jobs load them
+#                   (nothing to do when the cache is warm); run by `make reproduce` and `make test`
 #   make reproduce-slurm  the same workflow on a SLURM cluster (profiles/slurm/: the executor
 #                   plugin submits the steps with sbatch; run it from a login node)
 #   make lint       ruff check + ruff format --check, snakefmt --check, snakemake --lint
@@ -107,13 +107,13 @@ CONFIG ?=
 CONFIG_ARGS := $(if $(strip $(CONFIG)),--configfile $(CONFIG))
 SLURM_PROFILE ?= profiles/slurm
 
-# numba's compile of the altimeter_attitude kernels (~11 CPU-s on an empty cache, else paid by
-# the workflow's first Monte Carlo jobs while the others wait on the cache's lock) as set-up:
-# pipeline/altimeter_attitude/warm_kernels.py runs the workflow's entry code on 2 runs and a short
-# flight. Phony, no stamp here: it keeps its own in the numba cache (removed by `make clean`), so
-# it costs ~0.1 CPU-s when the cache is warm; a failure is a warning (the jobs compile then).
+# The papers' set-up work before a workflow (pipeline/warm_up.py calls each plug-in's warm_up):
+# altimeter_attitude compiles its numba kernels (~11 CPU-s on an empty cache, else paid by the
+# workflow's first Monte Carlo jobs while the others wait on the cache's lock). Phony, no stamp
+# here: each warm-up keeps its own (numba's in its cache, removed by `make clean`), so this costs
+# ~0.1 CPU-s when done; a failure is a warning (the jobs do that work then).
 warm-kernels: $(PROJECT_STAMP)
-	@PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.altimeter_attitude.warm_kernels
+	@PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.warm_up
 
 reproduce: $(PROJECT_STAMP)
 	@mkdir -p .snakemake

@@ -18,7 +18,7 @@ issue's targets:
 checkout's files (tracked and untracked, not ignored; so uncommitted edits count) are copied
 to a temporary directory, with no results, no Snakemake state and an empty numba cache, as a
 fresh clone has; the set-up's numba warm-up (``make warm-kernels``:
-:mod:`pipeline.altimeter_attitude.warm_kernels`) runs there, timed apart, and then
+:mod:`pipeline.warm_up`, each paper's plug-in warm-up) runs there, timed apart, and then
 ``make workflow`` (what ``make reproduce`` runs after set-up, the Snakemake report included)
 with this checkout's ``.venv`` on 2 cores. It prints the
 wall time, the CPU seconds of every process it started, the load average before and after
@@ -68,7 +68,7 @@ FULL_RUN_TARGET_S = 60.0
 SAMPLED_DENSELY_S = 15.0
 NOOP_TARGET_S = 3.0
 #: the set-up's numba warm-up (``make warm-kernels``), run in the copy before a full run
-WARM_MODULE = "pipeline.altimeter_attitude.warm_kernels"
+WARM_MODULE = "pipeline.warm_up"
 CORES = 2
 
 

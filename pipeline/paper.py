@@ -231,6 +231,12 @@ class Paper:
     #: was hard, what the paper left open), as ``function(inputs: ReportInputs) -> list of
     #: pipeline.report.model blocks``, its numbers read from the results; empty: none
     discussion: str = ""
+    #: ``"module:function"``: the paper's set-up work before a workflow (``make warm-kernels``,
+    #: :mod:`pipeline.warm_up`), as ``function(argv: list[str]) -> int``, ``argv`` being
+    #: ``[]`` or ``["--force"]`` (redo it even if its own stamp says it is done); e.g. compiling
+    #: numba kernels into their on-disk cache. An optimisation: its failure is a warning, and
+    #: the workflow must give the same bytes without it. Empty: none
+    warm_up: str = ""
 
     def __post_init__(self) -> None:
         if not SLUG_PATTERN.match(self.slug):
@@ -302,6 +308,17 @@ class Paper:
         if not name:
             raise ValueError(
                 f"paper {self.slug}: discussion {self.discussion!r} is not 'module:function'"
+            )
+        return getattr(importlib.import_module(module), name)
+
+    def warm_up_function(self) -> Callable[[list[str]], int] | None:
+        """The function :attr:`warm_up` names (None if empty)."""
+        if not self.warm_up:
+            return None
+        module, _, name = self.warm_up.partition(":")
+        if not name:
+            raise ValueError(
+                f"paper {self.slug}: warm_up {self.warm_up!r} is not 'module:function'"
             )
         return getattr(importlib.import_module(module), name)
 

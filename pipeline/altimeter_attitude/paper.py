@@ -228,6 +228,7 @@ PAPER = Paper(
     report="pipeline.altimeter_attitude.report:report",
     load_published="pipeline.altimeter_attitude.verdicts:load_published",
     discussion="pipeline.altimeter_attitude.discussion:discussion",
+    warm_up="pipeline.altimeter_attitude.warm_kernels:main",
     math_stems=MATH_STEMS,
     # the notebook's last table reads the paper scenario's summary when it exists: an input,
     # so that the notebook runs after it (else its output depends on the job order)
