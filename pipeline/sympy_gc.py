@@ -5,9 +5,10 @@ north-finding audit: ~50 million function calls), almost all short-lived and fre
 reference counts; the cyclic collector scans them anyway, every 700 allocations for the
 youngest generation and, as the heap grows, all of it (importing SymPy and the derivations
 alone: ~0.1 CPU-s of ~0.4). Within :func:`paused_gc` the collector does not run; the few
-cycles made are freed when the process exits (peak memory of the ten jobs +1..26 MB, measured). At the end
-everything still alive is frozen (``gc.freeze``: moved to a generation no collection scans,
-including the one at the interpreter's exit) and the collector is switched back on if it was.
+cycles made stay until the process exits (peak memory of the ten jobs +0..26 MB, measured).
+At the end everything still alive is frozen (``gc.freeze``: moved to a generation no
+collection scans, including the one at the interpreter's exit) and the collector is switched
+back on if it was.
 
 The garbage collector frees memory only: what a job computes and writes is the same with it
 paused (the jobs' outputs are byte-identical; SymPy defines no ``__del__``).
