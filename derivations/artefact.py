@@ -40,6 +40,7 @@ import sympy.core.random as _sympy_random
 from derivations.canonical_pickle import canonical_dumps
 from derivations.checks import Check
 from derivations.codegen import GeneratedFunction
+from derivations.factors_dict import lean_dict_factors
 from derivations.futrig_memo import memoised_futrig
 
 __all__ = ["FRAMES", "PROTOCOL", "build", "build_frames", "dumps", "load"]
@@ -70,7 +71,9 @@ def build(audit_module: str, generator_module: str) -> dict[str, Any]:
     module, with its header. The shared frames module is derived once for every paper
     (:func:`build_frames`, the ``derive_frames`` rule), not in each paper's artefact."""
     audit = importlib.import_module(audit_module)
-    with memoised_futrig():  # each trigsimp node once in the process (the same results)
+    # each trigsimp node once in the process; Factors of a dict without a throw-away SymPy Dict
+    # (the same results: derivations.futrig_memo, derivations.factors_dict)
+    with memoised_futrig(), lean_dict_factors():
         modules = [_generated(generator_module)]
         _reseed()
         checks = audit.checks()
@@ -94,7 +97,7 @@ def build_frames() -> dict[str, Any]:
 
 
 def _frames_modules() -> list[dict[str, Any]]:
-    with memoised_futrig():
+    with memoised_futrig(), lean_dict_factors():
         return [_generated(FRAMES)]
 
 

@@ -56,6 +56,7 @@ from typing import Any
 import sympy as sp
 
 from derivations.discrepancies import DISCREPANCIES, kind_of
+from derivations.factors_dict import lean_dict_factors
 from derivations.futrig_memo import memoised_futrig
 from derivations.residual_tidy import tidy as _tidy
 
@@ -260,8 +261,9 @@ def run_check(check: Check) -> AuditRow:
 
 def run_audit(checks: Iterable[Check]) -> list[AuditRow]:
     """Run every check; equation numbers must be unique. The residuals are tidied with each
-    ``trigsimp`` node simplified once for all checks (:mod:`derivations.futrig_memo`)."""
-    with memoised_futrig():
+    ``trigsimp`` node simplified once for all checks (:mod:`derivations.futrig_memo`), and
+    ``Factors`` of a dict built without a SymPy ``Dict`` (:mod:`derivations.factors_dict`)."""
+    with memoised_futrig(), lean_dict_factors():
         rows = [run_check(c) for c in checks]
     seen: set[str] = set()
     for r in rows:

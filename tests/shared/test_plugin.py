@@ -32,6 +32,7 @@ SHARED = [
     "derivations/checks.py",
     "derivations/residual_tidy.py",
     "derivations/futrig_memo.py",
+    "derivations/factors_dict.py",
     "derivations/memo.py",
     "derivations/codegen.py",
     "derivations/frames.py",
