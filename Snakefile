@@ -46,8 +46,7 @@ include: "pipeline/rules/report.smk"
 rule all:
     input:
         [paper_targets(slug) for slug in PAPERS],
-        rules.reproduction_html.output,
-        rules.reproduction_pdf.output,
+        rules.reproduction.output,
 
 
 # Under a cluster executor (`make reproduce-slurm`) the targets and the steps that take seconds

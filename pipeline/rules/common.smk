@@ -50,7 +50,7 @@ JOB_RESOURCES = ResourceTable.load(Path(workflow.basedir) / "config" / "job_reso
 def benchmark_job(benchmark):
     """The job name of a rule's benchmark file in config/job_resources.csv: its path below
     results/ without ``benchmarks/`` and ``.tsv`` (wildcards unexpanded: ``{paper}/derive``,
-    ``some_paper/simulate_{scenario}``, ``reproduction_html``)."""
+    ``some_paper/simulate_{scenario}``, ``reproduction``)."""
     rel = str(benchmark).removeprefix(f"{RESULTS}/").removesuffix(".tsv")
     # a rule's own benchmark path carries its wildcard constraints: {paper,some_paper|...}
     return re.sub(r"\{(\w+),[^{}]*\}", r"{\1}", rel.replace("benchmarks/", ""))

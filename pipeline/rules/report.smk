@@ -1,44 +1,25 @@
 # The combined report of every paper in config["papers"]: reports/reproduction.html and
-# reports/reproduction.pdf (scoreboard, one section per paper, provenance).
+# reports/reproduction.pdf (scoreboard, one section per paper, provenance), the two formats of
+# one document, written by one job (the document is built once).
 
 
-rule reproduction_html:
+rule reproduction:
     input:
         **reproduction_inputs(),
-        code=code(script="reproduction_report.py"),
+        code=code(script="reproduction.py"),
         config_file="config/config.yaml",
     output:
-        tagged(f"{REPORTS}/reproduction.html", "reproduction", "Reports", "reproduction"),
+        html=tagged(f"{REPORTS}/reproduction.html", "reproduction", "Reports", "reproduction"),
+        pdf=tagged(f"{REPORTS}/reproduction.pdf", "reproduction", "Reports", "reproduction"),
     log:
-        f"{RESULTS}/logs/reproduction_html.log",
+        f"{RESULTS}/logs/reproduction.log",
     benchmark:
-        f"{RESULTS}/benchmarks/reproduction_html.tsv"
-    priority: job_priority(f"{RESULTS}/benchmarks/reproduction_html.tsv")
+        f"{RESULTS}/benchmarks/reproduction.tsv"
+    priority: job_priority(f"{RESULTS}/benchmarks/reproduction.tsv")
     conda:
         ENV
-    threads: job_threads(f"{RESULTS}/benchmarks/reproduction_html.tsv")
+    threads: job_threads(f"{RESULTS}/benchmarks/reproduction.tsv")
     resources:
-        **job_resources(f"{RESULTS}/benchmarks/reproduction_html.tsv"),
+        **job_resources(f"{RESULTS}/benchmarks/reproduction.tsv"),
     script:
-        "../scripts/reproduction_report.py"
-
-
-rule reproduction_pdf:
-    input:
-        **reproduction_inputs(),
-        code=code(script="reproduction_pdf.py"),
-        config_file="config/config.yaml",
-    output:
-        tagged(f"{REPORTS}/reproduction.pdf", "reproduction", "Reports", "reproduction"),
-    log:
-        f"{RESULTS}/logs/reproduction_pdf.log",
-    benchmark:
-        f"{RESULTS}/benchmarks/reproduction_pdf.tsv"
-    priority: job_priority(f"{RESULTS}/benchmarks/reproduction_pdf.tsv")
-    conda:
-        ENV
-    threads: job_threads(f"{RESULTS}/benchmarks/reproduction_pdf.tsv")
-    resources:
-        **job_resources(f"{RESULTS}/benchmarks/reproduction_pdf.tsv"),
-    script:
-        "../scripts/reproduction_pdf.py"
+        "../scripts/reproduction.py"

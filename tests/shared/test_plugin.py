@@ -190,7 +190,11 @@ def test_dry_run_plans_every_step_of_every_paper():
             mine = step.scenarios(ctx) if step.scenarios else ctx.scenarios
             want = len(mine) if step.per_scenario else 1
             assert counts.get(f"{slug}_{step.name}", 0) == want, (slug, step.name, counts)
-    assert counts["reproduction_html"] == 1 and counts["reproduction_pdf"] == 1
+    # one job writes both formats of the combined report (the document is built once)
+    assert counts["reproduction"] == 1
+    out = r.stdout + r.stderr
+    job = out[out.index("rule reproduction:") :].split("\n\n", 1)[0]
+    assert re.search(r"output: reports/reproduction\.html\b.*, reports/reproduction\.pdf\b", job)
 
 
 @pytest.mark.workflow
@@ -209,7 +213,7 @@ def test_one_paper_in_config_plans_only_that_paper(tmp_path):
     assert not [rule for rule in counts if any(rule.startswith(o) for o in others)], counts
     assert set(re.findall(r"paper=(\w+)", out)) == {slug}
     assert counts["derive"] == counts["audit"] == counts["codegen_check"] == counts["notebook"] == 1
-    assert counts["reproduction_html"] == 1
+    assert counts["reproduction"] == 1
 
 
 def _planned(repo: Path) -> dict[str, int]:
@@ -235,8 +239,7 @@ def test_an_edit_reruns_exactly_the_dependent_jobs(workflow_run, tmp_path):
     if slug not in yaml.safe_load((repo / "config" / "config.yaml").read_text())["papers"]:
         pytest.skip(f"{slug} not in config")
     n_scenarios = len(list((repo / "config" / "scenarios" / slug).glob("*.yaml")))
-    readers = {f"{slug}_verdicts", f"{slug}_figures", f"{slug}_report", "reproduction_html"}
-    readers |= {"reproduction_pdf", "all"}
+    readers = {f"{slug}_verdicts", f"{slug}_figures", f"{slug}_report", "reproduction", "all"}
     if slug == "north_finding":  # its averaging-count inference runs the estimators too
         readers.add(f"{slug}_infer_n")
 
@@ -256,4 +259,4 @@ def test_an_edit_reruns_exactly_the_dependent_jobs(workflow_run, tmp_path):
     planned = _planned(repo)
     data.write_text(text, encoding="utf-8")
     assert planned.pop(f"{slug}_simulate") == 1  # only the scenario that reads the file
-    assert set(planned) == {f"{slug}_report", "reproduction_html", "reproduction_pdf", "all"}
+    assert set(planned) == {f"{slug}_report", "reproduction", "all"}

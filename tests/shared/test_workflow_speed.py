@@ -129,10 +129,10 @@ def test_bench_collect_groups_scenarios(tmp_path: Path) -> None:
     _tsv(res / "nf" / "benchmarks" / "simulate_paper.tsv", 2.0, 1.5)
     _tsv(res / "nf" / "benchmarks" / "simulate_high_latitude.tsv", 3.0, 2.5)
     _tsv(res / "nf" / "benchmarks" / "verdicts.tsv", 1.0, 0.75)
-    _tsv(res / "benchmarks" / "reproduction_html.tsv", 4.0, 3.0)
+    _tsv(res / "benchmarks" / "reproduction.tsv", 4.0, 3.0)
     steps = {(s.paper, s.step): s for s in bench_workflow.collect(res)}
     assert sorted(steps) == [
-        ("(all papers)", "reproduction_html"),
+        ("(all papers)", "reproduction"),
         ("nf", "simulate"),
         ("nf", "verdicts"),
     ]
