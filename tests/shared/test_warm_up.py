@@ -94,3 +94,18 @@ def test_the_plug_ins_warm_ups_resolve():
     for paper in named:
         assert callable(paper.warm_up_function())
     assert dataclasses.replace(named[0], warm_up="").warm_up_function() is None
+
+
+def test_bytecode_is_compiled_once_and_a_bad_module_is_a_warning(tmp_path, capsys):
+    for package in warm_up.PACKAGES:
+        (tmp_path / package).mkdir()
+        (tmp_path / package / "good.py").write_text("X = 1\n")
+    assert warm_up.compile_bytecode(tmp_path)
+    cached = sorted(tmp_path.rglob("__pycache__/good.*.pyc"))
+    assert len(cached) == len(warm_up.PACKAGES)
+    stamps = [p.stat().st_mtime_ns for p in cached]
+    assert warm_up.compile_bytecode(tmp_path)  # current: not rewritten
+    assert [p.stat().st_mtime_ns for p in cached] == stamps
+    (tmp_path / warm_up.PACKAGES[0] / "bad.py").write_text("def (:\n")
+    assert not warm_up.compile_bytecode(tmp_path)
+    assert "warning: bytecode: a module did not compile" in capsys.readouterr().err
