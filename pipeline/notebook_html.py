@@ -60,6 +60,7 @@ from pipeline.mathml_soup import soup_form
 __all__ = [
     "KERNEL_EXTENSION",
     "KERNEL_HASH_SEED",
+    "KERNEL_SYMPY_CACHE_SIZE",
     "MathConversionError",
     "OfflineHTMLExporter",
     "build",
@@ -74,6 +75,11 @@ __all__ = [
 
 #: ``PYTHONHASHSEED`` of the kernel that executes a notebook (set and dict order reproducible)
 KERNEL_HASH_SEED = "0"
+#: ``SYMPY_CACHE_SIZE`` of that kernel unless the environment sets it: the size every other SymPy
+#: process of the workflow has (``derivations.SYMPY_CACHE_SIZE``, set when ``derivations`` is
+#: imported, which a notebook does after importing SymPy, too late for SymPy to read it). At
+#: SymPy's default of 1,000 entries the notebooks' simplifications evict what they reuse.
+KERNEL_SYMPY_CACHE_SIZE = "50000"
 #: the IPython extension the kernel that executes a notebook loads (see :func:`execute`;
 #: imported here too, so that the notebook jobs' code inputs include it)
 KERNEL_EXTENSION = notebook_kernel.__name__
@@ -451,8 +457,9 @@ def wall_clock_reads(nb: nbformat.NotebookNode) -> list[str]:
 
 def execute(path: str | os.PathLike[str], cwd: str | os.PathLike[str] = ".", timeout: int = 600):
     """Execute the notebook at ``path`` in a fresh python3 kernel whose working directory is
-    ``cwd`` and whose ``PYTHONHASHSEED`` is :data:`KERNEL_HASH_SEED`; return it, normalised.
-    A notebook that reads the clock is refused (its page would differ between runs).
+    ``cwd`` and whose ``PYTHONHASHSEED`` is :data:`KERNEL_HASH_SEED` (``SYMPY_CACHE_SIZE``
+    :data:`KERNEL_SYMPY_CACHE_SIZE` unless set); return it, normalised. A notebook that reads
+    the clock is refused (its page would differ between runs).
 
     The kernel starts with :mod:`pipeline.notebook_kernel` loaded (no pretty-printed plain
     text for an output the page shows as LaTeX; the repository is put on its ``PYTHONPATH``
@@ -469,6 +476,7 @@ def execute(path: str | os.PathLike[str], cwd: str | os.PathLike[str] = ".", tim
     env = {  # the kernel's environment: this process's, plus
         **os.environ,
         "PYTHONHASHSEED": KERNEL_HASH_SEED,
+        "SYMPY_CACHE_SIZE": os.environ.get("SYMPY_CACHE_SIZE", KERNEL_SYMPY_CACHE_SIZE),
         "PYTHONPATH": os.pathsep.join(path_entries),
     }
     NotebookClient(

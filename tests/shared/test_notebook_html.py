@@ -254,6 +254,31 @@ def test_the_kernel_gives_latex_outputs_no_pretty_print_and_the_page_is_the_same
     assert "<msqrt>" in page
 
 
+def test_the_kernel_has_the_workflows_sympy_cache_and_memoised_trigsimp(tmp_path, monkeypatch):
+    """The build's kernel reads SymPy's cache size from its environment (the size every SymPy
+    process of the workflow has: a notebook imports SymPy before ``derivations`` sets it), and
+    runs trigsimp with each futrig node memoised once ``derivations`` is imported, not before
+    (importing it is the notebook's own step: it seeds SymPy's generator, preloads the memo)."""
+    import derivations
+
+    monkeypatch.delenv("SYMPY_CACHE_SIZE", raising=False)
+    assert NH.KERNEL_SYMPY_CACHE_SIZE == derivations.SYMPY_CACHE_SIZE
+    probe = (
+        "import sys\nimport sympy as sp\nT = sys.modules['sympy.simplify.trigsimp']\n"
+        "print(sys.modules['sympy.core.cache'].SYMPY_CACHE_SIZE, hasattr(T._futrig, 'memo'))"
+    )
+    cells = [
+        new_code_cell(probe),
+        new_code_cell("import derivations\nx = derivations.SYMPY_SEED"),
+        new_code_cell("t = sp.Symbol('t')\nsp.trigsimp(sp.sin(t) ** 2 + sp.cos(t) ** 2)"),
+        new_code_cell("print(T._futrig.memo.get(sp.sin(t) ** 2 + sp.cos(t) ** 2))"),
+    ]
+    executed = NH.execute(_python_notebook(tmp_path, cells), tmp_path)
+    texts = [out.get("text") for cell in executed.cells for out in cell.outputs]
+    assert texts[0] == f"{NH.KERNEL_SYMPY_CACHE_SIZE} False\n"
+    assert texts[-1] == "1\n"  # the node the third cell simplified, remembered
+
+
 # --------------------------------------------------------------------------- code cells
 
 _TRICKY_CODE = (
