@@ -258,26 +258,32 @@ def clean_code_html(html: str) -> str:
     return html if _PYGMENTS_HTML.fullmatch(html) else clean_html(html)
 
 
-#: a formula's place in the page while BeautifulSoup re-serialises it (see OfflineHTMLExporter)
+#: a formula's or code cell's place in the page while BeautifulSoup re-serialises it (see
+#: OfflineHTMLExporter)
 _SLOT = "offline-mathml-slot-"
 _SLOTS = re.compile(rf"<!--{_SLOT}(\d+)-->|<(/?)(?:pre|textarea)\b|{_SLOT}")
 
 
 class _Places:
-    """The formulas of one export that wait outside the page while BeautifulSoup rewrites it."""
+    """The formulas and code cells of one export that wait outside the page while BeautifulSoup
+    rewrites it."""
 
     def __init__(self, active: bool) -> None:
         self.active = active
-        self.mathml: list[str] = []  # as converted
+        self.fragments: list[str] = []  # as converted or highlighted
         self.forms: list[str | None] = []  # as BeautifulSoup writes them (None: put back)
 
-    def place(self, mathml: str) -> str:
-        form = soup_form(mathml) if self.active else None
+    def place(self, fragment: str) -> str:
+        """``fragment``'s place (a comment), or ``fragment`` if BeautifulSoup is to write it;
+        whitespace after its last tag (a highlighted cell's newline) stays in the page, where
+        BeautifulSoup joins it to the text that follows, as it would have."""
+        body = fragment.rstrip(" \t\n\f\r")
+        form = soup_form(body) if self.active else None
         if form is None:
-            return mathml  # BeautifulSoup writes this one itself
-        self.mathml.append(mathml)
+            return fragment  # BeautifulSoup writes this one itself
+        self.fragments.append(body)
         self.forms.append(form)
-        return f"<!--{_SLOT}{len(self.forms) - 1}-->"
+        return f"<!--{_SLOT}{len(self.forms) - 1}-->{fragment[len(body) :]}"
 
     def unplace(self, html: str) -> str:
         """``html`` (a fragment) with its formulas put back as converted."""
@@ -285,12 +291,12 @@ class _Places:
         def back(m: re.Match) -> str:
             i = int(m[1])
             self.forms[i] = None
-            return self.mathml[i]
+            return self.fragments[i]
 
         return re.sub(rf"<!--{_SLOT}(\d+)-->", back, html)
 
     def put_back(self, html: str) -> str | None:
-        """``html`` with each place replaced by its formula as BeautifulSoup writes it, or None
+        """``html`` with each place replaced by its fragment as BeautifulSoup writes it, or None
         if the places are not each there once, in order, outside ``<pre>`` and ``<textarea>``,
         or something else carries the marker."""
         expected = iter([i for i, form in enumerate(self.forms) if form is not None])
@@ -313,13 +319,13 @@ class OfflineHTMLExporter(HTMLExporter):
     as MathML, no scripts. ``problems`` lists the formulas the last export could not convert.
 
     nbconvert ends an export by parsing the page with BeautifulSoup and writing it back. The
-    MathML, about half of a page's tags and of that pass's time, goes through it as a comment
-    naming its place (``<!--offline-mathml-slot-<i>-->``, kept as it is), and is put back
-    afterwards in the form BeautifulSoup would have written (:func:`pipeline.mathml_soup.\
-soup_form`): the same page. If a place did not come back exactly once, in order and outside
-    ``<pre>``, or the notebook itself contains the marker, the page is exported again with the
-    MathML in it (``tests/shared/test_notebook_html.py`` compares both ways on the papers'
-    notebooks)."""
+    MathML (about half of a page's tags) and the highlighted code cells (most of the rest) go
+    through it as a comment naming their place (``<!--offline-mathml-slot-<i>-->``, kept as it
+    is), and are put back afterwards in the form BeautifulSoup would have written
+    (:func:`pipeline.mathml_soup.soup_form`): the same page. If a place did not come back
+    exactly once, in order and outside ``<pre>``, or the notebook itself contains the marker,
+    the page is exported again with them in it (``tests/shared/test_notebook_html.py``
+    compares both ways)."""
 
     def __init__(self, **kw) -> None:
         kw.setdefault("embed_images", True)
@@ -373,7 +379,12 @@ soup_form`): the same page. If a place did not come back exactly once, in order 
         yield ("latex_output_mathml", self._latex_output)
         # the lab template applies clean_html to the highlighted code cells only (this
         # exporter does not sanitise markdown or outputs): the same result, faster
-        yield ("clean_html", clean_code_html)
+        yield ("clean_html", self._code_html)
+
+    def _code_html(self, html) -> str:
+        """A highlighted code cell as bleach leaves it (:func:`clean_code_html`), kept out of
+        the BeautifulSoup pass as the formulas are."""
+        return self._places.place(clean_code_html(html))
 
 
 # --------------------------------------------------------------------------- determinism

@@ -307,6 +307,45 @@ def test_code_cells_are_what_bleach_makes_of_them(paper):
     assert fast == len(sources)  # every cell took the fast path, and it agreed with bleach
 
 
+@pytest.mark.parametrize("paper", ["altimeter_attitude", "north_finding", "platform_drift"])
+def test_code_cells_kept_out_of_beautifulsoup_come_back_as_it_writes_them(paper):
+    """Each code cell of the papers' notebooks (and tricky code), highlighted and cleaned as the
+    export does, has a form (pipeline.mathml_soup.soup_form: it is kept out of the BeautifulSoup
+    pass) and that form is what BeautifulSoup writes."""
+    from bs4 import BeautifulSoup
+    from nbconvert.filters.highlight import Highlight2HTML
+
+    from pipeline.mathml_soup import soup_form
+    from pipeline.registry import ROOT
+
+    highlight = Highlight2HTML(pygments_lexer="ipython3")
+    nb = nbformat.read(ROOT / "notebooks" / f"{paper}.ipynb", as_version=4)
+    sources = [c.source for c in nb.cells if c.cell_type == "code"] + [_TRICKY_CODE, "  \n\n"]
+    for source in sources:
+        html = NH.clean_code_html(highlight(source, metadata={})).rstrip()
+        assert soup_form(html) == str(BeautifulSoup(html, features="html.parser")), source[:200]
+
+
+@pytest.mark.parametrize(
+    "source", [_TRICKY_CODE, "x = 1\n\n\n", "", "  \n", "# <!--offline-mathml-slot-0-->"]
+)
+def test_code_kept_out_of_beautifulsoup_gives_the_same_page(source, monkeypatch):
+    """A page whose code cells skip nbconvert's BeautifulSoup pass is the page with them in it
+    (the newline after a cell's markup, left in the page, joins the text that follows)."""
+    from pipeline.mathml_soup import soup_form
+
+    nb = _notebook()
+    nb.cells.insert(1, new_code_cell(source, execution_count=2))
+    nb.cells[1].id = "code-2"
+    forms = []
+    with monkeypatch.context() as m:
+        m.setattr(NH, "soup_form", lambda fragment: forms.append(soup_form(fragment)) or forms[-1])
+        fast = NH.to_html(NH.normalise(nb), "demo")
+    assert sum(bool(f and f.startswith("<div")) for f in forms) == 2  # both cells kept out
+    monkeypatch.setattr(NH, "soup_form", lambda fragment: None)
+    assert NH.to_html(NH.normalise(nb), "demo") == fast
+
+
 @pytest.mark.parametrize(
     "html",
     [
