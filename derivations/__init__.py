@@ -16,8 +16,11 @@ import os
 # SymPy's cache (an LRU of its core operations) holds 1,000 entries unless SYMPY_CACHE_SIZE says
 # otherwise, read when SymPy is first imported (the workflow's scripts import this package
 # first). The derivations and the audit's simplifications evict entries they reuse at that size;
-# at 50,000 the north-finding audit took about 12 % less CPU time, with the same outputs.
-os.environ.setdefault("SYMPY_CACHE_SIZE", "50000")
+# at 50,000 the north-finding audit took about 12 % less CPU time, with the same outputs. A
+# notebook imports SymPy before this package: the build gives its kernel the same size in its
+# environment (pipeline.notebook_html.KERNEL_SYMPY_CACHE_SIZE, named there, not imported).
+SYMPY_CACHE_SIZE = "50000"
+os.environ.setdefault("SYMPY_CACHE_SIZE", SYMPY_CACHE_SIZE)
 
 import sympy.core.random as _sympy_random  # noqa: E402
 

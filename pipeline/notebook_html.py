@@ -60,6 +60,7 @@ from pipeline.mathml_soup import soup_form
 __all__ = [
     "KERNEL_EXTENSION",
     "KERNEL_HASH_SEED",
+    "KERNEL_SYMPY_CACHE_SIZE",
     "MathConversionError",
     "OfflineHTMLExporter",
     "build",
@@ -74,6 +75,11 @@ __all__ = [
 
 #: ``PYTHONHASHSEED`` of the kernel that executes a notebook (set and dict order reproducible)
 KERNEL_HASH_SEED = "0"
+#: ``SYMPY_CACHE_SIZE`` of that kernel unless the environment sets it: the size every other SymPy
+#: process of the workflow has (``derivations.SYMPY_CACHE_SIZE``, set when ``derivations`` is
+#: imported, which a notebook does after importing SymPy, too late for SymPy to read it). At
+#: SymPy's default of 1,000 entries the notebooks' simplifications evict what they reuse.
+KERNEL_SYMPY_CACHE_SIZE = "50000"
 #: the IPython extension the kernel that executes a notebook loads (see :func:`execute`;
 #: imported here too, so that the notebook jobs' code inputs include it)
 KERNEL_EXTENSION = notebook_kernel.__name__
@@ -252,26 +258,32 @@ def clean_code_html(html: str) -> str:
     return html if _PYGMENTS_HTML.fullmatch(html) else clean_html(html)
 
 
-#: a formula's place in the page while BeautifulSoup re-serialises it (see OfflineHTMLExporter)
+#: a formula's or code cell's place in the page while BeautifulSoup re-serialises it (see
+#: OfflineHTMLExporter)
 _SLOT = "offline-mathml-slot-"
 _SLOTS = re.compile(rf"<!--{_SLOT}(\d+)-->|<(/?)(?:pre|textarea)\b|{_SLOT}")
 
 
 class _Places:
-    """The formulas of one export that wait outside the page while BeautifulSoup rewrites it."""
+    """The formulas and code cells of one export that wait outside the page while BeautifulSoup
+    rewrites it."""
 
     def __init__(self, active: bool) -> None:
         self.active = active
-        self.mathml: list[str] = []  # as converted
+        self.fragments: list[str] = []  # as converted or highlighted
         self.forms: list[str | None] = []  # as BeautifulSoup writes them (None: put back)
 
-    def place(self, mathml: str) -> str:
-        form = soup_form(mathml) if self.active else None
+    def place(self, fragment: str) -> str:
+        """``fragment``'s place (a comment), or ``fragment`` if BeautifulSoup is to write it;
+        whitespace after its last tag (a highlighted cell's newline) stays in the page, where
+        BeautifulSoup joins it to the text that follows, as it would have."""
+        body = fragment.rstrip(" \t\n\f\r")
+        form = soup_form(body) if self.active else None
         if form is None:
-            return mathml  # BeautifulSoup writes this one itself
-        self.mathml.append(mathml)
+            return fragment  # BeautifulSoup writes this one itself
+        self.fragments.append(body)
         self.forms.append(form)
-        return f"<!--{_SLOT}{len(self.forms) - 1}-->"
+        return f"<!--{_SLOT}{len(self.forms) - 1}-->{fragment[len(body) :]}"
 
     def unplace(self, html: str) -> str:
         """``html`` (a fragment) with its formulas put back as converted."""
@@ -279,12 +291,12 @@ class _Places:
         def back(m: re.Match) -> str:
             i = int(m[1])
             self.forms[i] = None
-            return self.mathml[i]
+            return self.fragments[i]
 
         return re.sub(rf"<!--{_SLOT}(\d+)-->", back, html)
 
     def put_back(self, html: str) -> str | None:
-        """``html`` with each place replaced by its formula as BeautifulSoup writes it, or None
+        """``html`` with each place replaced by its fragment as BeautifulSoup writes it, or None
         if the places are not each there once, in order, outside ``<pre>`` and ``<textarea>``,
         or something else carries the marker."""
         expected = iter([i for i, form in enumerate(self.forms) if form is not None])
@@ -307,13 +319,13 @@ class OfflineHTMLExporter(HTMLExporter):
     as MathML, no scripts. ``problems`` lists the formulas the last export could not convert.
 
     nbconvert ends an export by parsing the page with BeautifulSoup and writing it back. The
-    MathML, about half of a page's tags and of that pass's time, goes through it as a comment
-    naming its place (``<!--offline-mathml-slot-<i>-->``, kept as it is), and is put back
-    afterwards in the form BeautifulSoup would have written (:func:`pipeline.mathml_soup.\
-soup_form`): the same page. If a place did not come back exactly once, in order and outside
-    ``<pre>``, or the notebook itself contains the marker, the page is exported again with the
-    MathML in it (``tests/shared/test_notebook_html.py`` compares both ways on the papers'
-    notebooks)."""
+    MathML (about half of a page's tags) and the highlighted code cells (most of the rest) go
+    through it as a comment naming their place (``<!--offline-mathml-slot-<i>-->``, kept as it
+    is), and are put back afterwards in the form BeautifulSoup would have written
+    (:func:`pipeline.mathml_soup.soup_form`): the same page. If a place did not come back
+    exactly once, in order and outside ``<pre>``, or the notebook itself contains the marker,
+    the page is exported again with them in it (``tests/shared/test_notebook_html.py``
+    compares both ways)."""
 
     def __init__(self, **kw) -> None:
         kw.setdefault("embed_images", True)
@@ -367,7 +379,12 @@ soup_form`): the same page. If a place did not come back exactly once, in order 
         yield ("latex_output_mathml", self._latex_output)
         # the lab template applies clean_html to the highlighted code cells only (this
         # exporter does not sanitise markdown or outputs): the same result, faster
-        yield ("clean_html", clean_code_html)
+        yield ("clean_html", self._code_html)
+
+    def _code_html(self, html) -> str:
+        """A highlighted code cell as bleach leaves it (:func:`clean_code_html`), kept out of
+        the BeautifulSoup pass as the formulas are."""
+        return self._places.place(clean_code_html(html))
 
 
 # --------------------------------------------------------------------------- determinism
@@ -451,8 +468,9 @@ def wall_clock_reads(nb: nbformat.NotebookNode) -> list[str]:
 
 def execute(path: str | os.PathLike[str], cwd: str | os.PathLike[str] = ".", timeout: int = 600):
     """Execute the notebook at ``path`` in a fresh python3 kernel whose working directory is
-    ``cwd`` and whose ``PYTHONHASHSEED`` is :data:`KERNEL_HASH_SEED`; return it, normalised.
-    A notebook that reads the clock is refused (its page would differ between runs).
+    ``cwd`` and whose ``PYTHONHASHSEED`` is :data:`KERNEL_HASH_SEED` (``SYMPY_CACHE_SIZE``
+    :data:`KERNEL_SYMPY_CACHE_SIZE` unless set); return it, normalised. A notebook that reads
+    the clock is refused (its page would differ between runs).
 
     The kernel starts with :mod:`pipeline.notebook_kernel` loaded (no pretty-printed plain
     text for an output the page shows as LaTeX; the repository is put on its ``PYTHONPATH``
@@ -469,6 +487,7 @@ def execute(path: str | os.PathLike[str], cwd: str | os.PathLike[str] = ".", tim
     env = {  # the kernel's environment: this process's, plus
         **os.environ,
         "PYTHONHASHSEED": KERNEL_HASH_SEED,
+        "SYMPY_CACHE_SIZE": os.environ.get("SYMPY_CACHE_SIZE", KERNEL_SYMPY_CACHE_SIZE),
         "PYTHONPATH": os.pathsep.join(path_entries),
     }
     NotebookClient(

@@ -13,6 +13,13 @@ kernel's ``text/plain`` formatter return an object's LaTeX, unchanged, when the 
 formatter renders it, and the usual plain text otherwise. A reader who runs the notebook in
 JupyterLab gets IPython's formatters as they are.
 
+It also runs the notebook's ``trigsimp`` and ``simplify`` as the derive step and the audits run
+theirs: each node that ``futrig`` simplifies is simplified once in the kernel
+(:func:`derivations.futrig_memo.memoised_futrig`, the same results), from the first cell after
+the one that imported :mod:`derivations` (importing it here would seed SymPy's random generator
+and preload the derivation memo at another point of the notebook than its own import does). The
+cells compute what they show as before; a node met again is looked up instead of searched again.
+
 >>> from IPython.core.formatters import DisplayFormatter
 >>> fmt = DisplayFormatter()
 >>> _ = fmt.formatters["text/latex"].for_type(complex, lambda z: f"${z.real} + {z.imag} i$")
@@ -25,9 +32,17 @@ JupyterLab gets IPython's formatters as they are.
 
 from __future__ import annotations
 
+import contextlib
+import sys
+
 from IPython.core.formatters import DisplayFormatter, PlainTextFormatter
 
-__all__ = ["LatexFirstPlainTextFormatter", "latex_first", "load_ipython_extension"]
+__all__ = [
+    "LatexFirstPlainTextFormatter",
+    "TrigsimpMemo",
+    "latex_first",
+    "load_ipython_extension",
+]
 
 
 class LatexFirstPlainTextFormatter(PlainTextFormatter):
@@ -51,6 +66,29 @@ def latex_first(formatter: DisplayFormatter) -> None:
         plain.__class__ = LatexFirstPlainTextFormatter
 
 
+class TrigsimpMemo:
+    """A ``pre_run_cell`` callback: once :mod:`derivations` is imported (``sys.modules``), opens
+    :func:`derivations.futrig_memo.memoised_futrig` for the rest of the kernel's life (the build
+    kills the kernel after the last cell); until then, does nothing.
+
+    >>> hook = TrigsimpMemo(modules={})
+    >>> hook(None), hook.memo
+    (None, None)
+    """
+
+    def __init__(self, modules: dict | None = None) -> None:
+        self.modules = sys.modules if modules is None else modules
+        self.memo: dict | None = None  # node -> simplified node, once open
+        self._stack = contextlib.ExitStack()
+
+    def __call__(self, info=None) -> None:
+        if self.memo is None and "derivations" in self.modules:
+            from derivations.futrig_memo import memoised_futrig
+
+            self.memo = self._stack.enter_context(memoised_futrig())
+
+
 def load_ipython_extension(ipython) -> None:
     """``%load_ext pipeline.notebook_kernel`` (what the build's kernel starts with)."""
     latex_first(ipython.display_formatter)
+    ipython.events.register("pre_run_cell", TrigsimpMemo())

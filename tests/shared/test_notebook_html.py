@@ -254,6 +254,31 @@ def test_the_kernel_gives_latex_outputs_no_pretty_print_and_the_page_is_the_same
     assert "<msqrt>" in page
 
 
+def test_the_kernel_has_the_workflows_sympy_cache_and_memoised_trigsimp(tmp_path, monkeypatch):
+    """The build's kernel reads SymPy's cache size from its environment (the size every SymPy
+    process of the workflow has: a notebook imports SymPy before ``derivations`` sets it), and
+    runs trigsimp with each futrig node memoised once ``derivations`` is imported, not before
+    (importing it is the notebook's own step: it seeds SymPy's generator, preloads the memo)."""
+    import derivations
+
+    monkeypatch.delenv("SYMPY_CACHE_SIZE", raising=False)
+    assert NH.KERNEL_SYMPY_CACHE_SIZE == derivations.SYMPY_CACHE_SIZE
+    probe = (
+        "import sys\nimport sympy as sp\nT = sys.modules['sympy.simplify.trigsimp']\n"
+        "print(sys.modules['sympy.core.cache'].SYMPY_CACHE_SIZE, hasattr(T._futrig, 'memo'))"
+    )
+    cells = [
+        new_code_cell(probe),
+        new_code_cell("import derivations\nx = derivations.SYMPY_SEED"),
+        new_code_cell("t = sp.Symbol('t')\nsp.trigsimp(sp.sin(t) ** 2 + sp.cos(t) ** 2)"),
+        new_code_cell("print(T._futrig.memo.get(sp.sin(t) ** 2 + sp.cos(t) ** 2))"),
+    ]
+    executed = NH.execute(_python_notebook(tmp_path, cells), tmp_path)
+    texts = [out.get("text") for cell in executed.cells for out in cell.outputs]
+    assert texts[0] == f"{NH.KERNEL_SYMPY_CACHE_SIZE} False\n"
+    assert texts[-1] == "1\n"  # the node the third cell simplified, remembered
+
+
 # --------------------------------------------------------------------------- code cells
 
 _TRICKY_CODE = (
@@ -280,6 +305,45 @@ def test_code_cells_are_what_bleach_makes_of_them(paper):
         assert NH.clean_code_html(html) == clean_html(html), source[:200]
         fast += bool(NH._PYGMENTS_HTML.fullmatch(html))
     assert fast == len(sources)  # every cell took the fast path, and it agreed with bleach
+
+
+@pytest.mark.parametrize("paper", ["altimeter_attitude", "north_finding", "platform_drift"])
+def test_code_cells_kept_out_of_beautifulsoup_come_back_as_it_writes_them(paper):
+    """Each code cell of the papers' notebooks (and tricky code), highlighted and cleaned as the
+    export does, has a form (pipeline.mathml_soup.soup_form: it is kept out of the BeautifulSoup
+    pass) and that form is what BeautifulSoup writes."""
+    from bs4 import BeautifulSoup
+    from nbconvert.filters.highlight import Highlight2HTML
+
+    from pipeline.mathml_soup import soup_form
+    from pipeline.registry import ROOT
+
+    highlight = Highlight2HTML(pygments_lexer="ipython3")
+    nb = nbformat.read(ROOT / "notebooks" / f"{paper}.ipynb", as_version=4)
+    sources = [c.source for c in nb.cells if c.cell_type == "code"] + [_TRICKY_CODE, "  \n\n"]
+    for source in sources:
+        html = NH.clean_code_html(highlight(source, metadata={})).rstrip()
+        assert soup_form(html) == str(BeautifulSoup(html, features="html.parser")), source[:200]
+
+
+@pytest.mark.parametrize(
+    "source", [_TRICKY_CODE, "x = 1\n\n\n", "", "  \n", "# <!--offline-mathml-slot-0-->"]
+)
+def test_code_kept_out_of_beautifulsoup_gives_the_same_page(source, monkeypatch):
+    """A page whose code cells skip nbconvert's BeautifulSoup pass is the page with them in it
+    (the newline after a cell's markup, left in the page, joins the text that follows)."""
+    from pipeline.mathml_soup import soup_form
+
+    nb = _notebook()
+    nb.cells.insert(1, new_code_cell(source, execution_count=2))
+    nb.cells[1].id = "code-2"
+    forms = []
+    with monkeypatch.context() as m:
+        m.setattr(NH, "soup_form", lambda fragment: forms.append(soup_form(fragment)) or forms[-1])
+        fast = NH.to_html(NH.normalise(nb), "demo")
+    assert sum(bool(f and f.startswith("<div")) for f in forms) == 2  # both cells kept out
+    monkeypatch.setattr(NH, "soup_form", lambda fragment: None)
+    assert NH.to_html(NH.normalise(nb), "demo") == fast
 
 
 @pytest.mark.parametrize(
