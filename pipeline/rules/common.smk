@@ -243,9 +243,10 @@ def notebook_code(wildcards):
 
 
 def reproduction_inputs():
-    """Every file the combined report reads, per paper."""
+    """Every file the combined report reads, per paper. Not the papers' pages nor their
+    notebook pages, which it only links to (rule all asks for them): it runs beside them."""
     named = {k: [] for k in ("audits", "math", "verdicts", "published", "scenarios")}
-    named.update({k: [] for k in ("provenance", "figures", "svg", "pages", "notebooks")})
+    named.update({k: [] for k in ("provenance", "figures", "svg")})
     # each paper's report sections (Paper.report), loaded by name: its import graph
     named["page_inputs"] = []
     named["paper_code"] = module_closure([m for p in PAPERS.values() for m in p.report_modules])
@@ -259,8 +260,6 @@ def reproduction_inputs():
         named["provenance"] += ctx.per_scenario("provenance.json")
         named["figures"] += [ctx.figure(f.file) for f in paper.figures]
         named["svg"] += [ctx.figure(f.svg) for f in paper.figures]
-        named["pages"].append(ctx.page)
-        named["notebooks"].append(ctx.notebook_html)
         # the paper's sections read what its page step reads
         for step in paper.steps:
             if step.entry.endswith(":page_step"):
