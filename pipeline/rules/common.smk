@@ -244,7 +244,7 @@ def notebook_code(wildcards):
 
 def reproduction_inputs():
     """Every file the combined report reads, per paper. Not the papers' pages nor their
-    notebook pages, which it only links to (rule all asks for them): it runs beside them."""
+    notebook pages, which it only links to (the target `all` asks for them): it runs beside them."""
     named = {k: [] for k in ("audits", "math", "verdicts", "published", "scenarios")}
     named.update({k: [] for k in ("provenance", "figures", "svg")})
     # each paper's report sections (Paper.report), loaded by name: its import graph
