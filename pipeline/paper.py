@@ -45,6 +45,7 @@ __all__ = [
     "Paper",
     "Step",
     "Paths",
+    "named_function",
     "StepEntry",
 ]
 
@@ -57,6 +58,26 @@ PUBLISHED_SCHEMA = "config/schemas/published.schema.json"
 Paths = Mapping[str, "str | list[str]"]
 #: ``entry(inputs, outputs, params, log)``: what a step runs.
 StepEntry = Callable[[Mapping[str, Any], Mapping[str, Any], Mapping[str, Any], Callable], None]
+
+
+def named_function(spec: str, what: str) -> Callable[..., Any]:
+    """The function ``spec`` (``"package.module:function"``) names; ``what`` says whose spec it
+    is in the ``ValueError`` raised for a malformed spec or a missing function.
+
+    >>> named_function("os.path:join", "an example")("a", "b")
+    'a/b'
+    >>> named_function("os.path", "paper x: report")
+    Traceback (most recent call last):
+    ...
+    ValueError: paper x: report 'os.path': must be 'module:function'
+    """
+    module, sep, name = spec.partition(":")
+    if not sep or not module or not name:
+        raise ValueError(f"{what} {spec!r}: must be 'module:function'")
+    fn = getattr(importlib.import_module(module), name, None)
+    if not callable(fn):
+        raise ValueError(f"{what} {spec!r}: {module} has no function {name!r}")
+    return fn
 
 
 @dataclass(frozen=True)
@@ -285,8 +306,7 @@ class Paper:
         """Validate the published file with :attr:`load_published` (nothing if empty); the
         parsed file (None if not validated)."""
         if self.load_published:
-            module, _, name = self.load_published.partition(":")
-            return getattr(importlib.import_module(module), name)(path)
+            return named_function(self.load_published, f"paper {self.slug}: load_published")(path)
         return None
 
     def report_function(self) -> Callable[[Any], Any]:
@@ -295,32 +315,19 @@ class Paper:
             from pipeline.report.model import PaperReport
 
             return lambda inputs: PaperReport(sections=[], parts={"published": None})
-        module, _, name = self.report.partition(":")
-        if not name:
-            raise ValueError(f"paper {self.slug}: report {self.report!r} is not 'module:function'")
-        return getattr(importlib.import_module(module), name)
+        return named_function(self.report, f"paper {self.slug}: report")
 
     def discussion_function(self) -> Callable[[Any], Any]:
         """The function ``discussion`` names (a function returning no blocks if none)."""
         if not self.discussion:
             return lambda inputs: []
-        module, _, name = self.discussion.partition(":")
-        if not name:
-            raise ValueError(
-                f"paper {self.slug}: discussion {self.discussion!r} is not 'module:function'"
-            )
-        return getattr(importlib.import_module(module), name)
+        return named_function(self.discussion, f"paper {self.slug}: discussion")
 
     def warm_up_function(self) -> Callable[[list[str]], int] | None:
         """The function :attr:`warm_up` names (None if empty)."""
         if not self.warm_up:
             return None
-        module, _, name = self.warm_up.partition(":")
-        if not name:
-            raise ValueError(
-                f"paper {self.slug}: warm_up {self.warm_up!r} is not 'module:function'"
-            )
-        return getattr(importlib.import_module(module), name)
+        return named_function(self.warm_up, f"paper {self.slug}: warm_up")
 
     @property
     def report_modules(self) -> list[str]:

@@ -21,14 +21,13 @@ ValueError: step entry 'pipeline.steps': must be 'module:function'
 
 from __future__ import annotations
 
-import importlib
 import os
 import sys
 from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
-from pipeline.paper import StepEntry
+from pipeline.paper import StepEntry, named_function
 from pipeline.script_log import logged
 
 __all__ = ["plain", "resolve", "run_step", "undeclared_reads", "watch_reads"]
@@ -36,13 +35,7 @@ __all__ = ["plain", "resolve", "run_step", "undeclared_reads", "watch_reads"]
 
 def resolve(entry: str) -> StepEntry:
     """The function ``entry`` names (``"package.module:function"``)."""
-    module, sep, name = entry.partition(":")
-    if not sep or not module or not name:
-        raise ValueError(f"step entry {entry!r}: must be 'module:function'")
-    fn = getattr(importlib.import_module(module), name, None)
-    if not callable(fn):
-        raise ValueError(f"step entry {entry!r}: {module} has no function {name!r}")
-    return fn
+    return named_function(entry, "step entry")
 
 
 def plain(named: Any) -> dict[str, Any]:

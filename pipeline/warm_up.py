@@ -75,6 +75,7 @@ def main(argv: list[str] | None = None) -> int:
         "--config", default="config/config.yaml", help="the config whose papers are warmed"
     )
     args = parser.parse_args(argv)
+    compile_bytecode()
     try:
         slugs = check_config_file(args.config).get("papers") or []
         if not isinstance(slugs, list) or not all(isinstance(s, str) for s in slugs):
@@ -82,7 +83,6 @@ def main(argv: list[str] | None = None) -> int:
     except Exception as exc:  # noqa: BLE001  (the workflow reports a bad config itself)
         print(f"warning: warm-up skipped: {args.config}: {exc}", file=sys.stderr)
         return 0
-    compile_bytecode()
     warm_papers(slugs, args.force)
     return 0
 

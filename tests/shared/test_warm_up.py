@@ -59,7 +59,7 @@ def test_each_warm_up_runs_and_failures_are_warnings(papers, capsys):
     assert CALLS == [("ok", ["--force"]), ("fails", ["--force"]), ("ok", ["--force"])]
     assert "warning: c: the set-up's warm-up failed (OSError: disk full)" in err
     assert "warning: b: the set-up's warm-up failed (exit status 3)" in err
-    assert "warning: e: " in err and "is not 'module:function'" in err
+    assert "warning: e: " in err and "must be 'module:function'" in err
     assert "Traceback" in err  # an exception's traceback is shown, for the one who fixes it
     CALLS.clear()
     assert warm_up.warm_papers(["a"]) == [] and CALLS == [("ok", [])]
