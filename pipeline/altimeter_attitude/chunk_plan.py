@@ -20,17 +20,31 @@ import math
 from pipeline.altimeter_attitude.scenario import Scenario
 from pipeline.job_resources import JobResources, derive_row
 
-__all__ = ["BLOCK_RUNS", "chunk_bounds", "chunk_request"]
+__all__ = ["BATCH_RUNS", "BLOCK_RUNS", "chunk_bounds", "chunk_request"]
 
-#: runs per block: the histories of one block (~150 MB per filter at 10,000 steps) are all
-#: that is held; fixed, so the results do not depend on the machine
+#: runs per block: the unit of the Monte Carlo's sums (one :class:`~pipeline.altimeter_attitude.
+#: mc_sums.BlockSums` per block and filter, what a chunk file keeps); fixed, so the results do
+#: not depend on the machine
 BLOCK_RUNS = 256
 
-#: measured (paper scenario, one block of 256 runs x 10,000 steps, 7 filters: 24.4 CPU s,
-#: peak RSS 1,143 MB; 100 runs: 523 MB): what a chunk job asks a cluster for, per run-step
-CPU_S_PER_RUN_STEP = 24.4 / (256 * 10_000)
-RSS_MB_PER_RUN_STEP = (1143.0 - 523.0) / (156 * 10_000)
-RSS_MB_BASE = 523.0 - 100 * 10_000 * RSS_MB_PER_RUN_STEP
+#: runs per filter call within a block: the histories of one batch (~19 MB per filter at
+#: 10,000 steps; the linear-KF variants run stacked, three times that) are all that is held.
+#: Fixed too: the linear KF's series length follows its batch's largest rotation (a 1e-17
+#: effect per run), the other filters treat each run alone. Memory a process touches for the
+#: first time is dear on a VM whose host reclaims the guest's freed pages (here ~5 ms of
+#: system CPU per MB, seconds after another process freed it): the paper scenario's 100 runs
+#: in one batch of 256 took 4.44 CPU-s (1.4 of them system, peak RSS 529 MB), in batches of
+#: 32 4.0, of 16 3.7 (0.4, 300 MB); 512 runs: 18.3 CPU-s in batches of 256 (1,379 MB), 14.5
+#: in batches of 32 (378 MB), 15.2 of 16 (medians of paired runs, one process each).
+BATCH_RUNS = 32
+
+#: measured (paper scenario, 10,000 steps, 7 filters, batches of BATCH_RUNS, one process:
+#: 512 runs 15.6 CPU-s, peak RSS 374 MB; 100 runs 352 MB; 8 runs 215 MB): what a chunk job
+#: asks a cluster for, per run-step; memory taken as linear up to a block through the 8- and
+#: 100-run peaks (584 MB at 256 runs: above what is measured, so a request is never short)
+CPU_S_PER_RUN_STEP = 15.6 / (512 * 10_000)
+RSS_MB_PER_RUN_STEP = (352.0 - 215.0) / (92 * 10_000)
+RSS_MB_BASE = 215.0 - 8 * 10_000 * RSS_MB_PER_RUN_STEP
 
 
 def chunk_bounds(
@@ -52,7 +66,7 @@ def chunk_bounds(
 def chunk_request(sc: Scenario, chunk_runs: int | None = None) -> JobResources:
     """A chunk job's threads, memory and run time (the margins of
     :func:`pipeline.job_resources.derive_row`), scaled from the measured cost per run-step:
-    memory by one block, CPU by the chunk's runs."""
+    memory by one block's runs (above what a block in batches needs), CPU by the chunk's runs."""
     runs = chunk_runs or sc.chunk_runs or sc.n_runs
     steps = int(round(sc.raw["trajectory"]["duration_s"] * sc.sensors.rate_hz))
     cpu = CPU_S_PER_RUN_STEP * runs * steps

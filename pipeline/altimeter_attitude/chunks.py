@@ -9,9 +9,10 @@ merge (rule ``altimeter_attitude_simulate``) writing the results files. Chunk ``
 
     [c * chunk_runs, min((c + 1) * chunk_runs, n_runs))
 
-in blocks of BLOCK_RUNS runs from its first run, so its blocks are exactly the in-process
-loop's blocks (a block's estimates depend on the batch it is run in: the linear KF's series
-length follows the batch's largest rotation). The file keeps each block's
+in blocks of BLOCK_RUNS runs from its first run, each run through the filters in batches of
+:data:`~pipeline.altimeter_attitude.chunk_plan.BATCH_RUNS` runs, so its blocks and batches are
+exactly the in-process loop's (estimates depend on the batch they are run in: the linear KF's
+series length follows the batch's largest rotation). The file keeps each block's
 :class:`~pipeline.altimeter_attitude.mc_sums.BlockSums` per filter, not their sum: the merge
 folds them in run order, the very additions of the in-process loop,
 
@@ -81,17 +82,17 @@ def simulate_chunk(
 ) -> list[tuple[int, BlockSums]]:
     """(first run, sums) of every block and filter of runs [start, stop), in the order the
     in-process loop folds them."""
-    from pipeline.altimeter_attitude.run import block_inputs, iter_filters, new_sums
+    from pipeline.altimeter_attitude.run import block_filter_sums, new_sums
 
     start, stop = bounds
     if start % block:
         raise ValueError(f"chunk runs {start}-{stop - 1}: must start on a block of {block} runs")
     _, mc, _ = new_sums(sc, filters)
     out: list[tuple[int, BlockSums]] = []
-    for first, part in block_inputs(sc, start, stop, block):
-        log(f"{sc.name}: runs {first}-{first + part.n_runs - 1} of {sc.n_runs}")
-        out += [(first, mc.block_sums(est)) for est in iter_filters(sc, part, filters, log)]
-        del part
+    for first in range(start, stop, block):
+        last = min(stop, first + block)
+        log(f"{sc.name}: runs {first}-{last - 1} of {sc.n_runs}")
+        out += [(first, s) for s in block_filter_sums(sc, mc, first, last, filters)[1]]
     return out
 
 

@@ -123,15 +123,30 @@ class BlockSums:
         return int(self.run_ms.shape[0])
 
 
-def block_sums(est: Estimates, truth: Truth, firsts: tuple[int, ...], n_times: int) -> BlockSums:
-    """One block's :class:`BlockSums` (one pass of :func:`_accumulate` over its histories)."""
+def block_sums(
+    est: Estimates,
+    truth: Truth,
+    firsts: tuple[int, ...],
+    n_times: int,
+    into: BlockSums | None = None,
+) -> BlockSums:
+    """One block's :class:`BlockSums` (one pass of :func:`_accumulate` over its histories).
+
+    ``into``: the sums of the block's earlier runs (a batch before this one, same filter),
+    continued: :func:`_accumulate` adds run after run into the same sums, so a block summed
+    batch by batch, in run order, has the same bits as the block summed at once."""
     n, t1 = est.roll.shape
     if t1 != n_times:
         raise ValueError(f"{est.filter}: {t1} state times, expected {n_times}")
-    block = np.zeros((len(_SQUARES), t1))
+    if into is not None and (into.filter, into.firsts) != (est.filter, tuple(firsts)):
+        raise ValueError(
+            f"{est.filter} sums from window starts {tuple(firsts)} cannot continue those of "
+            f"{into.filter} from {into.firsts}"
+        )
+    block = np.zeros((len(_SQUARES), t1)) if into is None else into.squares
+    any_sigma = np.zeros(2, dtype=bool) if into is None else into.any_sigma
     run_ms = np.zeros((n, len(firsts), 2))
     flags = np.zeros((n, 3), dtype=bool)
-    any_sigma = np.zeros(2, dtype=bool)
     f = np.ascontiguousarray
     _accumulate(
         f(est.roll), f(est.pitch), f(est.roll_sigma), f(est.pitch_sigma), f(est.c),
@@ -140,6 +155,8 @@ def block_sums(est: Estimates, truth: Truth, firsts: tuple[int, ...], n_times: i
         block, run_ms, flags, any_sigma,
     )  # fmt: skip
     counts = flags.sum(axis=0).astype(np.int64)
+    if into is not None:
+        run_ms, counts = np.concatenate([into.run_ms, run_ms]), into.counts + counts
     return BlockSums(est.filter, tuple(firsts), block, run_ms, counts, any_sigma)
 
 
@@ -277,9 +294,10 @@ class MonteCarloSums:
             sums = self.filters[est.filter] = FilterSums(est.filter, len(self.truth.t))
         sums.add(est, self.truth, self.firsts)
 
-    def block_sums(self, est: Estimates) -> BlockSums:
-        """One block's sums of one filter, not folded in (a chunk job writes them)."""
-        return block_sums(est, self.truth, self.firsts, len(self.truth.t))
+    def block_sums(self, est: Estimates, into: BlockSums | None = None) -> BlockSums:
+        """One block's sums of one filter, not folded in (a chunk job writes them);
+        ``into``: the block's sums so far, continued (:func:`block_sums`)."""
+        return block_sums(est, self.truth, self.firsts, len(self.truth.t), into)
 
     def fold(self, part: BlockSums) -> None:
         """Fold one block's sums in (blocks in run order), as :meth:`add` does."""

@@ -44,6 +44,7 @@ import numpy as np
 import pandas as pd
 
 from pipeline.altimeter_attitude import complementary, euler_filters, linear_kf, metrics, windows
+from pipeline.altimeter_attitude.chunk_plan import BATCH_RUNS
 from pipeline.altimeter_attitude.columns import (
     ALTIMETER_FILTERS,
     RMS_SUMMARY_COLUMNS,
@@ -54,7 +55,7 @@ from pipeline.altimeter_attitude.columns import (
     WINDOW_SUMMARY_COLUMNS,
 )
 from pipeline.altimeter_attitude.estimates import Estimates
-from pipeline.altimeter_attitude.mc_sums import BLOCK_RUNS, MonteCarloSums
+from pipeline.altimeter_attitude.mc_sums import BLOCK_RUNS, BlockSums, MonteCarloSums
 from pipeline.altimeter_attitude.scenario import ROOT, Scenario, load_scenario
 from pipeline.altimeter_attitude.sensors import Inputs, concat_inputs, simulate_inputs
 from pipeline.altimeter_attitude.trajectory import load_factor
@@ -68,7 +69,7 @@ __all__ = [
     "simulate",
     "simulate_sums",
     "new_sums",
-    "block_inputs",
+    "block_filter_sums",
     "add_noise_free",
     "truth_frame",
     "run_scenario",
@@ -167,19 +168,35 @@ def new_sums(
     return clean, mc, nf
 
 
-def block_inputs(
-    sc: Scenario, start: int, stop: int, block: int = BLOCK_RUNS
-) -> Iterator[tuple[int, Inputs]]:
-    """(first run, inputs) of runs ``start``..``stop - 1`` in blocks of ``block`` runs."""
-    if block < 1:
-        raise ValueError(f"block = {block}: must be >= 1")
-    for first in range(start, stop, block):
-        size = min(block, stop - first)
+def block_filter_sums(
+    sc: Scenario,
+    mc: MonteCarloSums,
+    start: int,
+    stop: int,
+    filters: tuple[str, ...] = ALTIMETER_FILTERS,
+    batch: int = BATCH_RUNS,
+) -> tuple[Inputs, list[BlockSums]]:
+    """The sums of the block of runs ``start``..``stop - 1``, one :class:`BlockSums` per filter
+    (in :func:`iter_filters`' order), the filters run ``batch`` runs at a time: a batch's
+    histories are all that is held. Each filter's sums are continued batch after batch in run
+    order (:func:`~pipeline.altimeter_attitude.mc_sums.block_sums`), the same additions as over
+    the whole block at once. Returns (the first batch's inputs, the sums)."""
+    if batch < 1:
+        raise ValueError(f"batch = {batch}: must be >= 1")
+    sums: dict[str, BlockSums] = {}
+    first_inputs: Inputs | None = None
+    for first in range(start, stop, batch):
         part = simulate_inputs(
-            sc.profiles, sc.sensors, sc.initial, size, sc.seed, sc.name, first_run=first
-        )
-        yield first, part
+            sc.profiles, sc.sensors, sc.initial, min(batch, stop - first), sc.seed, sc.name,
+            first_run=first,
+        )  # fmt: skip
+        for est in iter_filters(sc, part, filters, lambda message: None):
+            sums[est.filter] = mc.block_sums(est, into=sums.get(est.filter))
+            del est
+        first_inputs = first_inputs or part
         del part
+    assert first_inputs is not None, f"runs {start}-{stop - 1}: an empty block"
+    return first_inputs, list(sums.values())
 
 
 def simulate_sums(
@@ -188,24 +205,27 @@ def simulate_sums(
     filters: tuple[str, ...] = ALTIMETER_FILTERS,
     log=print,
     block: int = BLOCK_RUNS,
+    batch: int = BATCH_RUNS,
 ) -> tuple[Inputs, MonteCarloSums, MonteCarloSums]:
-    """The Monte Carlo of :func:`simulate` in blocks of ``block`` runs, each filter's estimates
-    folded into :class:`MonteCarloSums` as soon as they are made, so memory is bounded by one
-    block whatever ``n_runs``; then the noise-free run alone (the compiled filters treat each
-    run alone; the linear KF's series length follows a batch's largest rotation, a 1e-17
-    effect). Returns (the first
-    block's inputs, for truth.csv; the Monte Carlo sums; the noise-free sums)."""
+    """The Monte Carlo of :func:`simulate` in blocks of ``block`` runs, each run through the
+    filters in batches of ``batch`` runs whose estimates are folded into the block's sums as
+    soon as they are made, so memory is bounded by one batch whatever ``n_runs``; then the
+    noise-free run alone (the compiled filters treat each run alone; the linear KF's series
+    length follows a batch's largest rotation, a 1e-17 effect). Returns (the first batch's
+    inputs, for truth.csv; the Monte Carlo sums; the noise-free sums)."""
+    if block < 1:
+        raise ValueError(f"block = {block}: must be >= 1")
     n = n_runs or sc.n_runs
     clean, mc, nf = new_sums(sc, filters)
     first_inputs: Inputs | None = None
-    for start, part in block_inputs(sc, 0, n, block):
-        if n > block:
-            log(f"{sc.name}: runs {start}-{start + part.n_runs - 1} of {n}")
-        for est in iter_filters(sc, part, filters, log):
-            mc.add(est)
-        if first_inputs is None:
-            first_inputs = part
-        del part
+    for start in range(0, n, block):
+        stop = min(n, start + block)
+        part, sums = block_filter_sums(sc, mc, start, stop, filters, batch)
+        for s in sums:
+            mc.fold(s)
+        first_inputs = first_inputs or part
+        log(f"{sc.name}: runs {start}-{stop - 1} of {n}: {', '.join(s.filter for s in sums)} done")
+        del part, sums
     add_noise_free(sc, clean, nf, filters)
     assert first_inputs is not None
     return first_inputs, mc, nf

@@ -14,8 +14,9 @@ made, and every filter sees the same realisations.
 
 from __future__ import annotations
 
+import functools
 import hashlib
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -78,6 +79,22 @@ def scenario_key(name: str) -> int:
     return int(hashlib.sha256(name.encode()).hexdigest()[:8], 16)
 
 
+@functools.lru_cache(maxsize=4)
+def _truths(profiles: Profiles, n_steps: int, dt: float) -> tuple[Truth, Truth]:
+    """The truth at the state times t_k = k dt (k = 0..n_steps) and at the IMU samples'
+    midpoints, computed once per trajectory and rate: a Monte Carlo run in batches
+    (run.BATCH_RUNS runs) asks for the same trajectory in every batch (~43 ms each). Every
+    batch shares these arrays, so they are read-only."""
+    t_state = np.arange(n_steps + 1) * dt
+    out = truth(profiles, t_state), truth(profiles, t_state[:-1] + dt / 2)
+    for tr in out:
+        for f in fields(tr):
+            value = getattr(tr, f.name)
+            if isinstance(value, np.ndarray):
+                value.setflags(write=False)
+    return out
+
+
 def simulate_inputs(
     profiles: Profiles,
     sensors: SensorSpec,
@@ -97,9 +114,7 @@ def simulate_inputs(
         raise ValueError(f"first_run = {first_run}: must be >= 0")
     dt = 1.0 / sensors.rate_hz
     n_steps = int(round(profiles.duration * sensors.rate_hz))
-    t_state = np.arange(n_steps + 1) * dt
-    tr_state = truth(profiles, t_state)
-    tr_mid = truth(profiles, t_state[:-1] + dt / 2)
+    tr_state, tr_mid = _truths(profiles, n_steps, dt)
     gyro = np.empty((n_runs, n_steps, 3))
     accel = np.empty((n_runs, n_steps, 3))
     alt = np.full((n_runs, n_steps + 1), np.nan)
@@ -132,7 +147,7 @@ def simulate_inputs(
 
 
 def concat_inputs(parts: list[Inputs]) -> Inputs:
-    """Stack the runs of several Inputs with the same dt, g, sensors and length (for sweeps).
+    """Stack the runs of several Inputs with the same dt, g, sensors and length (the UKF tuning stacks the noise-free run onto its Monte Carlo).
 
     The filters only see sensor outputs and initial estimates, so runs of different
     trajectories or initial sigmas can share one vectorised pass; ``truth`` is the first

@@ -166,3 +166,46 @@ def test_accumulated_errors_are_the_float_mod_bit_for_bit():
     )  # fmt: skip
     err = [(x + math.pi) % (2 * math.pi) - math.pi for x in est.tolist()]  # Python floats
     assert block[0].tobytes() == np.array([e * e for e in err]).tobytes()
+
+
+def test_a_block_summed_batch_by_batch_has_the_bits_of_the_block_at_once(short):
+    """block_sums continued with ``into`` over a block's runs in two batches (run order) gives
+    the very bits of one pass over the block: the additions are the same, in the same order.
+    Estimates of a per-run filter (the UKF) on 5 runs, split 3 + 2."""
+    from pipeline.altimeter_attitude import euler_filters
+    from pipeline.altimeter_attitude.mc_sums import block_sums
+
+    sc = short
+    inputs = simulate_inputs(sc.profiles, sc.sensors, sc.initial, 5, sc.seed, sc.name)
+    est = euler_filters.run_ukf(inputs, sc.ukf_alpha, sc.ukf_beta, sc.ukf_kappa)
+    _, mc, _ = run.new_sums(sc)
+    n_times = len(mc.truth.t)
+    whole = block_sums(est, mc.truth, mc.firsts, n_times)
+    head, tail = (run._split(est, sl) for sl in (slice(0, 3), slice(3, 5)))
+    parts = block_sums(head, mc.truth, mc.firsts, n_times)
+    parts = block_sums(tail, mc.truth, mc.firsts, n_times, into=parts)
+    for name in ("squares", "run_ms", "counts", "any_sigma"):
+        assert np.array_equal(getattr(whole, name), getattr(parts, name)), name
+        assert getattr(whole, name).tobytes() == getattr(parts, name).tobytes(), name
+    # the sums of one filter cannot continue another's
+    ekf = euler_filters.run_ekf(inputs)
+    with pytest.raises(ValueError, match="cannot continue those of ukf"):
+        block_sums(ekf, mc.truth, mc.firsts, n_times, into=parts)
+
+
+def test_the_batch_changes_only_the_linear_kf(short):
+    """Blocks run through the filters in batches of 2 or of 8 runs: every filter that treats
+    each run alone (UKF, EKF, complementary, levelling) gives the same bits; the linear-KF
+    variants (series length per batch) agree to 1e-12."""
+    sc = short
+    mcs = {}
+    for batch in (2, 8):
+        _, mc, _ = run.simulate_sums(sc, 6, log=lambda m: None, batch=batch)
+        mcs[batch] = mc.summary_frame().set_index("filter")
+    a, b = mcs[2], mcs[8]
+    for f in ("ukf", "ekf", "complementary", "accel_leveling"):
+        assert a.loc[f].to_numpy(float).tobytes() == b.loc[f].to_numpy(float).tobytes(), f
+    lkf = ["linear_kf", "linear_kf_no_gamma", "gyro_only"]
+    np.testing.assert_allclose(
+        a.loc[lkf].to_numpy(float), b.loc[lkf].to_numpy(float), rtol=1e-12, equal_nan=True
+    )
