@@ -147,7 +147,8 @@ def simulate_inputs(
 
 
 def concat_inputs(parts: list[Inputs]) -> Inputs:
-    """Stack the runs of several Inputs with the same dt, g, sensors and length (the UKF tuning stacks the noise-free run onto its Monte Carlo).
+    """Stack the runs of several Inputs with the same dt, g, sensors and length (the UKF
+    tuning stacks the noise-free run onto its Monte Carlo).
 
     The filters only see sensor outputs and initial estimates, so runs of different
     trajectories or initial sigmas can share one vectorised pass; ``truth`` is the first
