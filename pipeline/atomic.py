@@ -15,14 +15,22 @@ import io
 import json
 import os
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     import pandas as pd
 
-__all__ = ["write_atomic", "write_text", "write_bytes", "write_csv", "write_text_csv", "write_json"]
+__all__ = [
+    "write_atomic",
+    "write_text",
+    "write_bytes",
+    "write_csv",
+    "write_csv_parts",
+    "write_text_csv",
+    "write_json",
+]
 
 
 def _umask() -> int:
@@ -154,13 +162,58 @@ def _csv_text(frame: pd.DataFrame) -> str | None:
     return "\n".join(lines) + "\n"
 
 
-def _write_frame(path: Path, frame: pd.DataFrame) -> None:
+def _frame_text(frame: pd.DataFrame) -> str:
+    """The CSV text of an already :func:`_formatted` frame, header line first."""
     text = _csv_text(frame)
     if text is None:
-        frame.to_csv(path, index=False, float_format="%.17g", lineterminator="\n")
-    else:
-        with open(path, "w", encoding="utf-8", newline="") as fh:
-            fh.write(text)
+        text = frame.to_csv(index=False, float_format="%.17g", lineterminator="\n")
+    return text
+
+
+def _write_frame(path: Path, frame: pd.DataFrame) -> None:
+    with open(path, "w", encoding="utf-8", newline="") as fh:
+        fh.write(_frame_text(frame))
+
+
+def write_csv_parts(
+    path: str | os.PathLike[str], parts: Sequence[pd.DataFrame], columns: list[str]
+) -> Path:
+    """:func:`write_csv` of the parts' rows one after the other, formatted and written part by
+    part: one part's text is in memory at a time, not the whole table's (the north-finding
+    paper's mc_trials_judged.csv, 23 MB of text, took ~240 MB and ~0.6 CPU-s as one table).
+    The same bytes as ``write_csv(path, pd.concat(parts, ignore_index=True), columns)`` when
+    the parts' columns have the same dtypes; otherwise that is what is written.
+
+    >>> import pandas as pd, tempfile
+    >>> a = pd.DataFrame({"x": [0.1, float("nan")], "n": [1, 2], "s": ["a", "b,c"]})
+    >>> b = pd.DataFrame({"x": [1e300], "n": [3], "s": ["d"]})
+    >>> d = Path(tempfile.mkdtemp())
+    >>> whole = write_csv(d / "w.csv", pd.concat([a, b], ignore_index=True), ["s", "x", "n"])
+    >>> write_csv_parts(d / "p.csv", [a, b], ["s", "x", "n"]).read_bytes() == whole.read_bytes()
+    True
+    >>> c = b.astype({"n": float})  # another dtype: written from the concatenated table
+    >>> whole = write_csv(d / "w.csv", pd.concat([a, c], ignore_index=True), ["s", "x", "n"])
+    >>> write_csv_parts(d / "p.csv", [a, c], ["s", "x", "n"]).read_bytes() == whole.read_bytes()
+    True
+    """
+    import pandas as pd
+
+    for part in parts:
+        missing = [c for c in columns if c not in part.columns]
+        if missing:
+            raise ValueError(f"{path}: missing contract columns {missing}")
+    dtypes = {tuple(part[columns].dtypes) for part in parts}
+    if len(dtypes) != 1:  # no parts, or parts whose concatenation changes a column's dtype
+        frame = pd.concat(parts, ignore_index=True) if parts else pd.DataFrame(columns=columns)
+        return write_csv(path, frame, columns)
+
+    def write(target: Path) -> None:
+        with open(target, "w", encoding="utf-8", newline="") as fh:
+            for i, part in enumerate(parts):
+                text = _frame_text(_formatted(part[columns]))
+                fh.write(text if i == 0 else text[text.index("\n") + 1 :])
+
+    return write_atomic(path, write)
 
 
 def write_csv(path: str | os.PathLike[str], frame: pd.DataFrame, columns: list[str]) -> Path:

@@ -12,8 +12,14 @@ GENERATED FILE: do not edit; regenerate with the command above.
 import numpy as np
 
 
+#: the types of a scalar output (a function called with scalar arguments)
+_SCALARS = (float, int, np.float64)
+
+
 def _broadcast(*outs):
     """Broadcast the outputs of a vector function to one common shape (fresh arrays)."""
+    if all(type(o) in _SCALARS for o in outs):  # scalars: nothing to broadcast
+        return tuple(np.array(o, dtype=float) for o in outs)
     arrays = [np.asarray(o, dtype=float) for o in outs]
     shape = np.broadcast_shapes(*[a.shape for a in arrays])
     return tuple(
@@ -26,6 +32,8 @@ def _broadcast(*outs):
 
 def _shaped(shape, *outs):
     """The broadcast outputs as one array of shape ``broadcast + shape``, filled row by row."""
+    if all(type(o) in _SCALARS for o in outs):  # scalars: the array of their values
+        return np.array(outs, dtype=float).reshape(shape)
     arrays = _broadcast(*outs)
     return np.stack(arrays, axis=-1).reshape(arrays[0].shape + shape)
 

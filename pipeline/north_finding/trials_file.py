@@ -34,7 +34,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from pipeline.atomic import write_atomic, write_csv
+from pipeline.atomic import write_atomic, write_csv_parts
 from pipeline.north_finding.columns import (
     MC_JUDGED_COLUMNS,
     MC_TRIAL_COLUMNS,
@@ -224,10 +224,7 @@ def write_trials(
     path = Path(directory) / f"{stem}.{fmt}"
     if fmt == "csv":
         parts = [trials_frame(e, truth).assign(n_avg=n) for n, e in blocks.items()]
-        frame = (
-            pd.concat(parts, ignore_index=True) if parts else pd.DataFrame(columns=COLUMNS[stem])
-        )
-        write_csv(path, frame, COLUMNS[stem])
+        write_csv_parts(path, parts, COLUMNS[stem])  # the text of one part at a time
     else:
         trials = Trials.from_estimates(blocks, truth)
         write_atomic(path, lambda p: _save(p, trials))

@@ -114,3 +114,31 @@ def test_every_generated_frames_function_broadcasts(name):
     many = fn(*([np.full(4, 0.3)] * n_args))
     assert many.shape == (4, *one.shape)
     np.testing.assert_array_equal(many[2], one)
+
+
+def test_scalar_arguments_take_the_fast_path_to_the_same_arrays():
+    """Called with Python floats (as the integrators' right-hand sides call them), the generated
+    functions' _broadcast and _shaped skip broadcasting; called with 0-d arrays they take the
+    general path. Both give arrays of the same shape, dtype and bits, outputs of 0 included."""
+    from pipeline.generated import platform_drift as gp
+
+    cases = [
+        (gf.mat_ne, (0.61, -1.3)),  # a matrix (_shaped)
+        (gf.skew, (1.5, -2.0, 0.25)),  # a matrix with exact zeros on the diagonal
+        (gf.earth_rate_n, (7.292115e-5, 0.61)),  # a vector with a 0 component
+        (gf.latlon_rates, (3.0, -4.0, 0.61, 6.4e6)),  # a tuple of scalars (_broadcast)
+    ]
+    cases += [(getattr(gp, name), None) for name in gp.__all__[:3]]
+    checked = 0
+    for fn, args in cases:
+        if args is None:  # a platform_drift function: every argument 0.3
+            args = (0.3,) * fn.__code__.co_argcount
+        fast, slow = fn(*args), fn(*(np.asarray(a) for a in args))
+        fast = fast if isinstance(fast, tuple) else (fast,)
+        slow = slow if isinstance(slow, tuple) else (slow,)
+        assert len(fast) == len(slow), fn.__name__
+        for a, b in zip(fast, slow, strict=True):
+            assert isinstance(a, np.ndarray) and a.dtype == b.dtype == float, fn.__name__
+            assert a.shape == b.shape and a.tobytes() == b.tobytes(), fn.__name__
+            checked += 1
+    assert checked >= 7
