@@ -20,11 +20,14 @@ It switches the kernel's cyclic garbage collector off, as the workflow's other S
 reference counts, which the collector scans anyway. Nothing a cell computes or shows depends on
 it (SymPy defines no ``__del__``; object addresses in reprs are renumbered by the build), the
 cycles made (a figure, a traceback) stay until the build kills the kernel after the last cell:
-peak memory +3..10 MB per notebook, kernel CPU -8..12 % (measured, see the commit).
+peak memory +2..9 MB per notebook; kernel CPU -7 % (altimeter_attitude) and -14 %
+(platform_drift) in one run each, before the other changes of that commit.
 
 It also runs the notebook's ``trigsimp`` and ``simplify`` as the derive step and the audits run
 theirs: each node that ``futrig`` simplifies is simplified once in the kernel
-(:func:`derivations.futrig_memo.memoised_futrig`, the same results), from the first cell after
+(:func:`derivations.futrig_memo.memoised_futrig`, the same results) and ``Factors`` of a
+dictionary are built without a throw-away SymPy ``Dict``
+(:func:`derivations.factors_dict.lean_dict_factors`, the same results), from the first cell after
 the one that imported :mod:`derivations` (importing it here would seed SymPy's random generator
 and preload the derivation memo at another point of the notebook than its own import does). The
 cells compute what they show as before; a node met again is looked up instead of searched again.
@@ -121,8 +124,9 @@ def latex_first(formatter: DisplayFormatter) -> None:
 
 class TrigsimpMemo:
     """A ``pre_run_cell`` callback: once :mod:`derivations` is imported (``sys.modules``), opens
-    :func:`derivations.futrig_memo.memoised_futrig` for the rest of the kernel's life (the build
-    kills the kernel after the last cell); until then, does nothing.
+    :func:`derivations.futrig_memo.memoised_futrig` and
+    :func:`derivations.factors_dict.lean_dict_factors` for the rest of the kernel's life (the
+    build kills the kernel after the last cell); until then, does nothing.
 
     >>> hook = TrigsimpMemo(modules={})
     >>> hook(None), hook.memo
@@ -136,9 +140,11 @@ class TrigsimpMemo:
 
     def __call__(self, info=None) -> None:
         if self.memo is None and "derivations" in self.modules:
+            from derivations.factors_dict import lean_dict_factors
             from derivations.futrig_memo import memoised_futrig
 
             self.memo = self._stack.enter_context(memoised_futrig())
+            self._stack.enter_context(lean_dict_factors())
 
 
 def load_ipython_extension(ipython) -> None:

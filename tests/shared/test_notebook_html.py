@@ -290,16 +290,22 @@ def test_the_kernel_has_the_workflows_sympy_cache_and_memoised_trigsimp(tmp_path
         "import sys\nimport sympy as sp\nT = sys.modules['sympy.simplify.trigsimp']\n"
         "print(sys.modules['sympy.core.cache'].SYMPY_CACHE_SIZE, hasattr(T._futrig, 'memo'))"
     )
+    lean = (
+        "from sympy.core.exprtools import Factors\n"
+        "print(getattr(Factors.__init__, 'lean_dict_factors', False))"
+    )
     cells = [
         new_code_cell(probe),
         new_code_cell("import derivations\nx = derivations.SYMPY_SEED"),
         new_code_cell("t = sp.Symbol('t')\nsp.trigsimp(sp.sin(t) ** 2 + sp.cos(t) ** 2)"),
         new_code_cell("print(T._futrig.memo.get(sp.sin(t) ** 2 + sp.cos(t) ** 2))"),
+        new_code_cell(lean),
     ]
     executed = NH.execute(_python_notebook(tmp_path, cells), tmp_path)
     texts = [out.get("text") for cell in executed.cells for out in cell.outputs]
     assert texts[0] == f"{NH.KERNEL_SYMPY_CACHE_SIZE} False\n"
-    assert texts[-1] == "1\n"  # the node the third cell simplified, remembered
+    assert texts[-2] == "1\n"  # the node the third cell simplified, remembered
+    assert texts[-1] == "True\n"  # Factors built by derivations.factors_dict
 
 
 # --------------------------------------------------------------------------- code cells
