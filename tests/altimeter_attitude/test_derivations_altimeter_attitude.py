@@ -29,6 +29,7 @@ from derivations.altimeter_attitude import complementary as cf
 from derivations.altimeter_attitude import kinematics as kin
 from derivations.altimeter_attitude import model as md
 from derivations.altimeter_attitude import multiplicative_noise as mn
+from derivations.altimeter_attitude import printed as pr
 from derivations.altimeter_attitude import symbols as s
 
 
@@ -152,6 +153,27 @@ def test_covariance_identity_is_exact_symbolically():
     assert mn.covariance_identity(n=2, m=2)["difference"] == sp.zeros(2, 2)
     assert mn.covariance_identity(setting=mn.paper_setting())["difference"] == sp.zeros(5, 5)
     assert mn.paper_gamma_term()["difference"] == sp.zeros(5, 5)
+
+
+def _printed_setting() -> mn.Setting:
+    st = mn.Setting(2, 2, [pr.Gc1, pr.Gc2])  # printed.py's n = m = 2 instance (the audit's)
+    st.F, st.P, st.Q, st.xhat = pr.F_a, pr.P_a, pr.Q_a, pr.xhat_a
+    return st
+
+
+@pytest.mark.parametrize("which", ["generic", "printed", "paper"])
+def test_expected_outer_is_the_expanded_expectation_of_each_product(which):
+    """covariance_identity's E[u u^T] from the moments of products of monomials is the same
+    expressions (srepr) as the expectation of each expanded product u_i u_j, entry by entry."""
+    st = {"generic": mn.generic_setting, "printed": _printed_setting, "paper": mn.paper_setting}
+    st = st[which]()
+    y = st.F * st.x + st.G(st.x) * st.w
+    for u in (y - st.F * st.xhat, st.G(st.x) * st.w, st.G(st.e) * st.w):
+        by_product = (u * u.T).applyfunc(lambda v: sp.expand(mn.expect(v, st)))
+        fast = mn._expected_outer(u, st)
+        assert [sp.srepr(v) for v in fast] == [sp.srepr(v) for v in by_product]
+    with pytest.raises(ValueError, match="needs more than the mean and covariance"):
+        mn._expected_outer(sp.Matrix([st.e[0] ** 2, st.e[0]]), st)
 
 
 # ---------------------------------------------------------------- the PI complementary filter

@@ -254,6 +254,29 @@ def test_the_kernel_gives_latex_outputs_no_pretty_print_and_the_page_is_the_same
     assert "<msqrt>" in page
 
 
+def test_the_kernel_prints_latex_once_per_output_and_runs_without_the_cyclic_gc(tmp_path):
+    """The build's kernel prints an output's LaTeX once for its text/plain and text/latex (the
+    same string), a display of the same object later prints it again, and the cyclic garbage
+    collector is off in the kernel (the page is the same: nothing shown depends on it)."""
+    code = (
+        "import gc\n"
+        "class C:\n"
+        "    calls = 0\n"
+        "    def _repr_latex_(self):\n"
+        "        C.calls += 1\n"
+        "        return f'$c_{C.calls}$'\n"
+        "c = C()\n"
+        "print(gc.isenabled())"
+    )
+    cells = [new_code_cell(code), new_code_cell("c"), new_code_cell("c"), new_code_cell("C.calls")]
+    executed = NH.execute(_python_notebook(tmp_path, cells), tmp_path)
+    outs = [out for cell in executed.cells for out in cell.outputs]
+    assert outs[0]["text"] == "False\n"
+    assert outs[1].data == {"text/plain": "$c_1$", "text/latex": "$c_1$"}
+    assert outs[2].data == {"text/plain": "$c_2$", "text/latex": "$c_2$"}
+    assert outs[3].data == {"text/plain": "2"}
+
+
 def test_the_kernel_has_the_workflows_sympy_cache_and_memoised_trigsimp(tmp_path, monkeypatch):
     """The build's kernel reads SymPy's cache size from its environment (the size every SymPy
     process of the workflow has: a notebook imports SymPy before ``derivations`` sets it), and
@@ -267,16 +290,22 @@ def test_the_kernel_has_the_workflows_sympy_cache_and_memoised_trigsimp(tmp_path
         "import sys\nimport sympy as sp\nT = sys.modules['sympy.simplify.trigsimp']\n"
         "print(sys.modules['sympy.core.cache'].SYMPY_CACHE_SIZE, hasattr(T._futrig, 'memo'))"
     )
+    lean = (
+        "from sympy.core.exprtools import Factors\n"
+        "print(getattr(Factors.__init__, 'lean_dict_factors', False))"
+    )
     cells = [
         new_code_cell(probe),
         new_code_cell("import derivations\nx = derivations.SYMPY_SEED"),
         new_code_cell("t = sp.Symbol('t')\nsp.trigsimp(sp.sin(t) ** 2 + sp.cos(t) ** 2)"),
         new_code_cell("print(T._futrig.memo.get(sp.sin(t) ** 2 + sp.cos(t) ** 2))"),
+        new_code_cell(lean),
     ]
     executed = NH.execute(_python_notebook(tmp_path, cells), tmp_path)
     texts = [out.get("text") for cell in executed.cells for out in cell.outputs]
     assert texts[0] == f"{NH.KERNEL_SYMPY_CACHE_SIZE} False\n"
-    assert texts[-1] == "1\n"  # the node the third cell simplified, remembered
+    assert texts[-2] == "1\n"  # the node the third cell simplified, remembered
+    assert texts[-1] == "True\n"  # Factors built by derivations.factors_dict
 
 
 # --------------------------------------------------------------------------- code cells
