@@ -30,6 +30,7 @@ from matplotlib.ticker import (
 )
 
 from pipeline.altimeter_attitude.maneuvers import LOAD_DEVIATION
+from pipeline.figure_layout import tight_layout
 from pipeline.figure_print import COLUMN_WIDTH_IN, FONT_PT, TEXT_WIDTH_IN
 
 __all__ = [
@@ -216,7 +217,7 @@ def finish(fig: Figure, title: str, subtitle: str, ncol: int = 3) -> Figure:
             fontsize=FS_SUBTITLE,
             color="0.25",
         ).set_in_layout(False)
-    fig.tight_layout(rect=(0, bottom_in / height, 1, 1 - head_in / height), h_pad=0.4, pad=0.3)
+    tight_layout(fig, rect=(0, bottom_in / height, 1, 1 - head_in / height), h_pad=0.4, pad=0.3)
     return fig
 
 

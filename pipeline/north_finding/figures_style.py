@@ -15,6 +15,7 @@ from typing import Any
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
+from pipeline.figure_layout import tight_layout
 from pipeline.figure_print import COLUMN_WIDTH_IN, FONT_PT, FONT_RC, TEXT_WIDTH_IN
 
 __all__ = ["COLUMN", "DPI", "FULL", "RC", "new_figure", "tight", "title"]
@@ -58,4 +59,4 @@ def tight(fig: Figure, bottom_artist: Any | None = None) -> None:
     if bottom_artist is not None:
         renderer = fig.canvas.get_renderer()
         bottom = bottom_artist.get_window_extent(renderer).height / fig.bbox.height + 0.01
-    fig.tight_layout(rect=(0.0, bottom, 1.0, 1.0), pad=0.4, w_pad=0.8)
+    tight_layout(fig, rect=(0.0, bottom, 1.0, 1.0), pad=0.4, w_pad=0.8)

@@ -33,6 +33,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 from pipeline.figure_files import write_png_svg
+from pipeline.figure_layout import tight_layout
 from pipeline.platform_drift.figures_style import DPI, RC, STYLE, WIDTH_IN, legend_below
 from pipeline.platform_drift.quantities import FINAL_S
 from pipeline.platform_drift.scenario import load_scenario
@@ -175,7 +176,7 @@ def _figure(
     legend = legend_below(fig, mains, ncol=3)
     renderer = fig.canvas.get_renderer()
     bottom = legend.get_window_extent(renderer).height / fig.bbox.height + 0.01
-    fig.tight_layout(rect=(0, bottom, 1, 1 - 0.2 / HEIGHT_IN), pad=0.3, w_pad=0.6, h_pad=0.3)
+    tight_layout(fig, rect=(0, bottom, 1, 1 - 0.2 / HEIGHT_IN), pad=0.3, w_pad=0.6, h_pad=0.3)
     return fig
 
 

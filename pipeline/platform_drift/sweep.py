@@ -23,6 +23,7 @@ from matplotlib.figure import Figure
 
 from pipeline.atomic import write_csv
 from pipeline.figure_files import write_png_svg
+from pipeline.figure_layout import tight_layout
 from pipeline.platform_drift.figures_style import DPI, RC, STYLE, WIDTH_IN, legend_below
 from pipeline.platform_drift.run import simulate_errors
 from pipeline.platform_drift.scenario import load_scenario
@@ -91,7 +92,7 @@ def plot(frame: pd.DataFrame, png_path: str | Path) -> list[Path]:
         legend = legend_below(fig, axes[1:], ncol=2)
         fig.suptitle("Fig. 9 (not in the paper): error at 2 h against latitude, vehicle at rest")
         bottom = legend.get_window_extent(fig.canvas.get_renderer()).height / fig.bbox.height
-        fig.tight_layout(rect=(0, bottom + 0.01, 1, 0.95), pad=0.3)
+        tight_layout(fig, rect=(0, bottom + 0.01, 1, 0.95), pad=0.3)
     return write_png_svg(fig, png_path, DPI)
 
 
