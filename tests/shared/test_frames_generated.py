@@ -142,3 +142,22 @@ def test_scalar_arguments_take_the_fast_path_to_the_same_arrays():
             assert a.shape == b.shape and a.tobytes() == b.tobytes(), fn.__name__
             checked += 1
     assert checked >= 7
+
+
+def test_array_and_scalar_arguments_broadcast_to_the_elementwise_results():
+    """An array argument beside scalar ones (one shape besides the scalars': no call of
+    broadcast_shapes) and two arrays that broadcast against each other give, element by
+    element, the bits of the scalar calls."""
+    lat = np.array([-1.2, 0.0, 0.4, 1.5])
+    got = gf.mat_ne(lat, 0.7)
+    assert got.shape == (4, 3, 3)
+    for i, v in enumerate(lat.tolist()):
+        assert got[i].tobytes() == gf.mat_ne(v, 0.7).tobytes()
+    lon = np.array([[0.1], [-2.0]])
+    got = gf.mat_ne(lat, lon)  # (4,) against (2, 1): (2, 4)
+    assert got.shape == (2, 4, 3, 3)
+    for j, w in enumerate(lon[:, 0].tolist()):
+        for i, v in enumerate(lat.tolist()):
+            assert got[j, i].tobytes() == gf.mat_ne(v, w).tobytes()
+    rates = gf.earth_rate_n(7.292115e-5, lat)  # a vector with a constant 0 component
+    assert rates.shape == (4, 3) and not rates[:, 1].any()
