@@ -48,7 +48,7 @@ from pipeline.altimeter_attitude.report_summary import (
 )
 from pipeline.altimeter_attitude.report_trouble import filter_trouble_blocks
 from pipeline.altimeter_attitude.report_tuning import TUNING_ID, tuning_section
-from pipeline.altimeter_attitude.scenario import load_scenario
+from pipeline.altimeter_attitude.scenario import Scenario, load_scenario
 from pipeline.altimeter_attitude.workflow import FIGURES, SWEEP_FIGURE
 from pipeline.columns import AUDIT_COLUMNS, VERDICT_COLUMNS
 from pipeline.report.figures import figure_blocks
@@ -227,12 +227,11 @@ def _figures(figures_dir: Path, sweep: pd.DataFrame | None, sweep_trouble: Path)
     )
 
 
-def _assumptions(scenario_files: Sequence[Path], shown: Callable[[Path], str]) -> Section:
-    if not scenario_files:
+def _assumptions(scenarios: Mapping[Path, Scenario], shown: Callable[[Path], str]) -> Section:
+    if not scenarios:
         return Section("assumptions", "Assumptions", [not_available("Scenario files")])
     subs = []
-    for path in scenario_files:
-        sc = load_scenario(path)
+    for path, sc in scenarios.items():
         rows = pd.DataFrame(
             [
                 {"field": d["field"], "value": _value_text(d["value"]), "decision": str(d["text"])}
@@ -272,7 +271,7 @@ def _flatten(data: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
 
 def _provenance(
     scenario_dirs: Mapping[str, Path],
-    scenario_files: Mapping[str, Path],
+    scenarios: Mapping[str, Scenario],
     inputs: Sequence[Path],
     shown: Callable[[Path], str],
 ) -> Section:
@@ -284,8 +283,8 @@ def _provenance(
         else:
             data = json.loads(p.read_text(encoding="utf-8"))
             flat = _flatten({k: v for k, v in data.items() if k != "packages"})
-            if name in scenario_files and "config_sha256" in data:
-                now = load_scenario(scenario_files[name]).config_sha256
+            if name in scenarios and "config_sha256" in data:
+                now = scenarios[name].config_sha256
                 flat["config_sha256 equals the scenario file's now"] = (
                     "yes" if now == data["config_sha256"] else f"no (file now: {now})"
                 )
@@ -351,8 +350,9 @@ def report(inputs: ReportInputs) -> PaperReport:
     files = sorted(
         inputs.scenarios.glob("*.yaml"), key=lambda f: (f.stem != published_scenario, f.stem)
     )
-    file_by_name = {f.stem: f for f in files}
-    descriptions = {f.stem: str(load_scenario(f).raw.get("description", "")).strip() for f in files}
+    scenarios = {f: load_scenario(f) for f in files}  # each read once (was thrice: ~40 ms)
+    by_name = {f.stem: sc for f, sc in scenarios.items()}
+    descriptions = {n: str(sc.raw.get("description", "")).strip() for n, sc in by_name.items()}
     sections = [
         Section(
             "summary", "Summary", summary_blocks(audit, verdicts, sums, published_scenario, windows)
@@ -371,10 +371,10 @@ def report(inputs: ReportInputs) -> PaperReport:
         findings_section(sums, sweep, noise_free),
         # the grid behind the UKF's settings: a supporting appendix of the combined report
         tuning_section(_read(tuning_path, UKF_TUNING_COLUMNS), inputs.shown(tuning_path)),
-        _assumptions(files, inputs.shown),
+        _assumptions(scenarios, inputs.shown),
         _provenance(
             dirs,
-            file_by_name,
+            by_name,
             [
                 audit_path,
                 verdicts_path,

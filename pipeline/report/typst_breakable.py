@@ -10,7 +10,7 @@ from typing import Any
 import sympy as sp
 from sympy.printing.precedence import PRECEDENCE
 
-from pipeline.report.typst_math import TypstMathPrinter
+from pipeline.report.typst_math import PrintMemo, TypstMathPrinter
 
 __all__ = ["typst_math_breakable"]
 
@@ -61,11 +61,13 @@ class _BreakablePrinter(TypstMathPrinter):
         return out
 
 
-def typst_math_breakable(expr: Any, **settings: Any) -> str:
+def typst_math_breakable(expr: Any, *, memo: PrintMemo | None = None, **settings: Any) -> str:
     """Like :func:`typst_math`, for an *inline* equation that may break across lines: the
     top-level sum of a scalar expression stays breakable (also inside a fraction's numerator or
-    a product). Matrices and tuples print as :func:`typst_math` would."""
-    printer = _BreakablePrinter(settings)
+    a product). Matrices and tuples print as :func:`typst_math` would. ``memo``: as for
+    :func:`typst_math`, and the same one may serve both (only the breakable top level, which
+    is not memoised, differs; below it this printer is :func:`typst_math`'s)."""
+    printer = _BreakablePrinter(settings, memo)
     if isinstance(expr, (tuple, list, sp.Tuple)):
         return ", quad ".join(printer._top(sp.sympify(e)) for e in expr)
     return printer._top(sp.sympify(expr))

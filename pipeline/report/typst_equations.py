@@ -50,10 +50,14 @@ class EquationRenderer:
         self.bad = bad
         self.snippets: list[str] = []
         self.stems: dict[str, str] = {}
+        # one memo per paper's stems (the printed text depends on them)
+        self._memos: dict[tuple[tuple[str, str], ...], M.PrintMemo] = {}
+        self.memo = M.PrintMemo()
 
     # ---- the table ------------------------------------------------------------------------
     def table(self, eqt: EquationTable) -> str:
         self.stems = dict(eqt.stems)  # the paper's own symbol stems, for its forms
+        self.memo = self._memos.setdefault(tuple(sorted(self.stems.items())), M.PrintMemo())
         out = []
         if eqt.caption:
             out.append(
@@ -140,7 +144,7 @@ class EquationRenderer:
     def math(self, expr: Any) -> str:
         """One form typeset (raw text if it does not print or does not typeset)."""
         try:
-            full = M.typst_math(expr, stems=self.stems)
+            full = M.typst_math(expr, memo=self.memo, stems=self.stems)
             alt = self._alt(expr)
         except Exception:  # noqa: BLE001 - any printing failure falls back to the raw form
             return raw_block(_plain(expr))
@@ -160,10 +164,10 @@ class EquationRenderer:
             for i in range(r):
                 for j in range(c):
                     idx = f"({i + 1})" if c == 1 else f"({i + 1}, {j + 1})"
-                    text = typst_math_breakable(expr[i, j], stems=self.stems)
+                    text = typst_math_breakable(expr[i, j], memo=self.memo, stems=self.stems)
                     cells.append(f"#text(size: 8.5pt, fill: neutral)[{idx}] ${text}$")
             return " #linebreak() ".join(cells)
-        return f"${typst_math_breakable(expr, stems=self.stems)}$"
+        return f"${typst_math_breakable(expr, memo=self.memo, stems=self.stems)}$"
 
 
 def _plain(expr: Any) -> str:

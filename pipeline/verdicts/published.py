@@ -14,6 +14,9 @@ field, the bad value and what is allowed; the error is a :class:`pipeline.config
 True
 >>> [i["label"] for i in load_published(d / "p.yaml")["items"]]
 ['Table 1']
+>>> load_published(d / "p.yaml")["items"].clear()  # a copy: the next call has its own
+>>> len(load_published(d / "p.yaml")["items"])
+1
 >>> (d / "p.yaml").write_text(
 ...     "paper: demo\\nitems:\\n  - {id: A, label: Table 1, kind: about, quantity: x, value: '1.5'}\\n"
 ...     "claims: []\\n", encoding="utf-8") > 0
@@ -27,6 +30,7 @@ pipeline.config.ConfigError: ...p.yaml: 1 problem(s):
 
 from __future__ import annotations
 
+import copy
 import math
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from pathlib import Path
@@ -272,11 +276,33 @@ def load_published(
     is checked (enough for a reader that wants the items' ids, labels and printed values).
     Raises :class:`ConfigError` listing every problem.
     """
+    key = _memo_key(path, claims, check_item)
+    if key in _CHECKED:
+        return copy.deepcopy(_CHECKED[key][-1])
     data = load_yaml(path, finite=False)  # non-finite values: named per item below
     problems = check_published(data, str(path), claims=claims, check_item=check_item)
     if problems:
         raise ConfigError(f"{path}: {len(problems)} problem(s):\n" + "\n".join(problems))
+    if key is not None:  # the checks held with it: their ids in the key stay theirs
+        _CHECKED[key] = (claims, check_item, copy.deepcopy(data))
     return data
+
+
+#: files this process has read and found valid, by path, bytes and the checks (the ids of the
+#: claim registry and item check, which a dataclass registry cannot be hashed by): a report
+#: job reads one file up to three times (its page's parts, the paper's report and its items:
+#: ~15 ms of schema validation each for the largest file) and a verdicts job twice; a copy of
+#: the parsed file is returned (0.3 ms), not parsed and validated again
+_CHECKED: dict[tuple[Any, ...], Any] = {}
+
+
+def _memo_key(path: str | Path, claims: Any, check_item: Any) -> tuple[Any, ...] | None:
+    """The memo's key of a call (its file's bytes in it: an edited file is read anew), or None
+    for an unreadable file (not memoised: load_yaml words the error)."""
+    try:
+        return (str(Path(path).resolve()), Path(path).read_bytes(), id(claims), id(check_item))
+    except OSError:
+        return None
 
 
 def published_items(published: Mapping[str, Any]) -> list[Mapping[str, Any]]:

@@ -16,7 +16,7 @@ import pytest
 import sympy as sp
 
 from pipeline.report.typst_breakable import typst_math_breakable
-from pipeline.report.typst_math import symbol_name, typst_math
+from pipeline.report.typst_math import PrintMemo, symbol_name, typst_math
 from tests.workflow_harness import NEEDS_RUN
 
 typst = pytest.importorskip("typst")
@@ -164,6 +164,19 @@ TRICKY = [
     sp.Matrix(0, 0, []),
     sp.Tuple(x, sp.Matrix([y])),
 ]
+
+
+def test_memo_prints_the_same():
+    """Printed with one memo shared by both printers, in an order that prints parts before the
+    wholes and the wholes again, every expression has the text it has without a memo (a key
+    that confused 1 with 1.0, or the breakable top level with the other, would differ)."""
+    memo = PrintMemo()
+    parts = [x + 1, x + 1.0, x + sp.Float(1.0, 30), (x + 1) / (y - 1), t * (x + y) / (x - 1)]
+    exprs = [*parts, *TRICKY, *parts, *TRICKY]
+    for e in exprs:
+        assert typst_math(e, memo=memo) == typst_math(e)
+        assert typst_math_breakable(e, memo=memo) == typst_math_breakable(e)
+    assert len(set(parts[:3]) & memo.keys()) == 3  # three keys, whatever their texts
 
 
 def test_tricky_expressions_compile(tmp_path):
