@@ -17,10 +17,10 @@ inside it, :func:`pipeline.figure_files.render` each ``savefig``.
 The subplot parameters, and so every PNG and SVG, are the same bytes (all 48 figure files of a
 full run compared with ``cmp``). Measured on the figure jobs' entry points (two batches of 6
 paired alternating runs against main, a shared 2-core machine at load 4-6, so inflated; process
-CPU-s, medians of the 12 runs, and the layout's CPU-s, the two batches' medians):
-altimeter_attitude figures 5.83 -> 5.09 (layout 0.82, 0.93 -> 0.52, 0.61), north_finding
-3.63 -> 3.28 (0.82, 0.85 -> 0.66, 0.69), platform_drift 3.61 -> 3.08 (0.89, 0.81 -> 0.36, 0.35),
-the altimeter sweep figure 1.38 -> 1.28 (0.10, 0.09 -> 0.07, 0.06).
+CPU-s, medians of the 12 runs, and the layout's CPU-s, the two batches' medians), the four
+figure jobs of the three papers: 5.83 -> 5.09 (layout 0.82, 0.93 -> 0.52, 0.61), 3.63 -> 3.28
+(0.82, 0.85 -> 0.66, 0.69), 3.61 -> 3.08 (0.89, 0.81 -> 0.36, 0.35) and 1.38 -> 1.28 (0.10,
+0.09 -> 0.07, 0.06).
 
 If Matplotlib stopped calling these methods, the memos would go unused (and a method it no
 longer has is not replaced): the layout and drawing are still Matplotlib's own, only slower.

@@ -20,8 +20,8 @@ It switches the kernel's cyclic garbage collector off, as the workflow's other S
 reference counts, which the collector scans anyway. Nothing a cell computes or shows depends on
 it (SymPy defines no ``__del__``; object addresses in reprs are renumbered by the build), the
 cycles made (a figure, a traceback) stay until the build kills the kernel after the last cell:
-peak memory +2..9 MB per notebook; kernel CPU -7 % (altimeter_attitude) and -14 %
-(platform_drift) in one run each, before the other changes of that commit.
+peak memory +2..9 MB per notebook; kernel CPU -7 % and -14 % in two of the three papers'
+notebooks (one run each, before the other changes of that commit).
 
 It also runs the notebook's ``trigsimp`` and ``simplify`` as the derive step and the audits run
 theirs: each node that ``futrig`` simplifies is simplified once in the kernel
