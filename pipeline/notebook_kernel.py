@@ -16,7 +16,7 @@ instead of printing the LaTeX a second time (0.05-0.1 CPU-s per notebook). A rea
 notebook in JupyterLab gets IPython's formatters as they are.
 
 It switches the kernel's cyclic garbage collector off, as the workflow's other SymPy jobs do
-(:mod:`pipeline.sympy_gc`): the cells build millions of short-lived SymPy objects, freed by their
+(:mod:`pipeline.job_gc`): the cells build millions of short-lived SymPy objects, freed by their
 reference counts, which the collector scans anyway. Nothing a cell computes or shows depends on
 it (SymPy defines no ``__del__``; object addresses in reprs are renumbered by the build), the
 cycles made (a figure, a traceback) stay until the build kills the kernel after the last cell:

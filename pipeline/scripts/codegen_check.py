@@ -3,8 +3,8 @@
 # rendered from the functions in its derivation artefact: the paper's (input.derivation, the
 # derive rule, derivations.<slug>.generate) and the frames one (input.frames_derivation, the
 # derive_frames rule, derivations.generate_frames).
-# The cyclic garbage collector is paused for the whole job, imports included (pipeline.sympy_gc).
-from pipeline.sympy_gc import paused_gc
+# The cyclic garbage collector is paused for the whole job, imports included (pipeline.job_gc).
+from pipeline.job_gc import paused_gc
 
 with paused_gc():
     from pathlib import Path

@@ -3,8 +3,8 @@
 # functions of the paper's generated module (params.generator) and of the shared frames module.
 # The equation audit and the codegen check read this artefact instead of deriving again; the
 # notebook preloads the results of the derivation functions computed on the way (the memo).
-# The cyclic garbage collector is paused for the whole job, imports included (pipeline.sympy_gc).
-from pipeline.sympy_gc import paused_gc
+# The cyclic garbage collector is paused for the whole job, imports included (pipeline.job_gc).
+from pipeline.job_gc import paused_gc
 
 with paused_gc():
     from derivations import artefact, memo

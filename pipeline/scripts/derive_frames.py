@@ -1,8 +1,8 @@
 # Snakemake script: the shared frames module's derivations (derivations.generate_frames),
 # computed once for every paper and pickled (derivations.artefact.build_frames); each paper's
 # codegen check renders them and compares with pipeline/generated/frames.py.
-# The cyclic garbage collector is paused for the whole job, imports included (pipeline.sympy_gc).
-from pipeline.sympy_gc import paused_gc
+# The cyclic garbage collector is paused for the whole job, imports included (pipeline.job_gc).
+from pipeline.job_gc import paused_gc
 
 with paused_gc():
     from derivations import artefact

@@ -3,8 +3,8 @@
 # Writes equation_audit.csv (the contract) and equation_math.json (printed, derived and residual
 # forms as MathML and SymPy srepr, for the reports). The rows are strings: written without
 # pandas (pipeline.atomic.write_text_csv, the bytes write_csv gives them; ~0.3 CPU-s a job).
-# The cyclic garbage collector is paused for the whole job, imports included (pipeline.sympy_gc).
-from pipeline.sympy_gc import paused_gc
+# The cyclic garbage collector is paused for the whole job, imports included (pipeline.job_gc).
+from pipeline.job_gc import paused_gc
 
 with paused_gc():
     from collections import Counter

@@ -3,12 +3,12 @@
 # pipeline/notebook_html.py). The kernel preloads the derivations the paper's derive step
 # computed (derivations/memo.py): the same results, without deriving them again.
 
-# The cyclic garbage collector is paused for the whole job, imports included (pipeline.sympy_gc):
+# The cyclic garbage collector is paused for the whole job, imports included (pipeline.job_gc):
 # the export builds nbconvert's and BeautifulSoup's trees of the page, and the collector scanned
 # them and the imported modules over and over (the kernel pauses its own, pipeline.notebook_kernel).
 import os
 
-from pipeline.sympy_gc import paused_gc
+from pipeline.job_gc import paused_gc
 
 # derivations.memo.ENV_VAR, named here rather than imported: importing derivations imports SymPy
 # (~0.4 CPU-s), which this process does not use (the kernel does; tests/shared/test_memo.py

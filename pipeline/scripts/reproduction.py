@@ -3,24 +3,28 @@
 # two formats of the same article, so one job reads the results and runs the papers' report
 # functions once (two jobs used to build the same document twice, ~1.3 CPU-s each, and paid
 # the imports twice).
-from pathlib import Path
+# The heap is frozen at the end, so the interpreter's exit does not scan it (pipeline.job_gc).
+from pipeline.job_gc import frozen_at_exit
 
-from pipeline.report.document import build_document
-from pipeline.report.reproduction_html import write_html
-from pipeline.report.reproduction_pdf import write_pdf
-from pipeline.script_log import logged
+with frozen_at_exit():
+    from pathlib import Path
 
-with logged(snakemake.log[0], written=snakemake.output):  # noqa: F821
-    root = Path.cwd()
-    doc = build_document(
-        root=root,
-        results_dir=snakemake.config["results_dir"],  # noqa: F821
-        reports_dir=snakemake.config["reports_dir"],  # noqa: F821
-        config=Path(snakemake.input.config_file).parent,  # noqa: F821
-    )
-    html = write_html(doc, snakemake.output.html)  # noqa: F821
-    for row in doc.scoreboard:
-        print(f"{row.slug}: {row.line}")
-    print(f"wrote {html} ({html.stat().st_size} bytes)")
-    pdf = write_pdf(doc, snakemake.output.pdf, root=root)  # noqa: F821
-    print(f"wrote {pdf} ({pdf.stat().st_size} bytes)")
+    from pipeline.report.document import build_document
+    from pipeline.report.reproduction_html import write_html
+    from pipeline.report.reproduction_pdf import write_pdf
+    from pipeline.script_log import logged
+
+    with logged(snakemake.log[0], written=snakemake.output):  # noqa: F821
+        root = Path.cwd()
+        doc = build_document(
+            root=root,
+            results_dir=snakemake.config["results_dir"],  # noqa: F821
+            reports_dir=snakemake.config["reports_dir"],  # noqa: F821
+            config=Path(snakemake.input.config_file).parent,  # noqa: F821
+        )
+        html = write_html(doc, snakemake.output.html)  # noqa: F821
+        for row in doc.scoreboard:
+            print(f"{row.slug}: {row.line}")
+        print(f"wrote {html} ({html.stat().st_size} bytes)")
+        pdf = write_pdf(doc, snakemake.output.pdf, root=root)  # noqa: F821
+        print(f"wrote {pdf} ({pdf.stat().st_size} bytes)")
