@@ -44,6 +44,11 @@ caption of each tagged output once per distinct text (:mod:`pipeline.snakemake_c
 docutils and Jinja compute the same HTML from the same input; the captions' ``publish_parts``
 0.243 -> 0.110 CPU-s, at the end of a run, in series).
 
+A sixth: each input of a finished job is hashed once per version of the file for the jobs'
+metadata records, not once per output of every job that reads it
+(:func:`pipeline.snakemake_checksums.known_checksums`: ~10,200 hashes, ~0.9 CPU-s of a full
+run in Snakemake's process; the records hold the same checksums).
+
 Not changed, measured: a ``script:`` job's preamble unpickles Snakemake's ``snakemake`` object,
 which imports ``snakemake.io`` and with it most of Snakemake (asyncio, ssl, ...): 0.11 CPU-s in
 a bare interpreter, but only 0.02-0.09 CPU-s more than what a step imports anyway (numpy 0.09,
@@ -274,6 +279,11 @@ def main(argv: list[str] | None = None) -> None:
 
         one_pending_reevaluation(JobScheduler)
         known_input_sizes(JobScheduler)
+        from snakemake.io import _IOFile
+
+        from pipeline.snakemake_checksums import known_checksums
+
+        known_checksums(_IOFile)
         from pipeline.exact_benchmark import exact_benchmarks
 
         # the modules (the package's attribute ``shell`` is the class of that name)

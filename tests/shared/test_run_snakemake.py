@@ -3,6 +3,8 @@ command line with at most one pending scheduler wake-up timer."""
 
 from __future__ import annotations
 
+import hashlib
+import json
 import os
 import subprocess
 import sys
@@ -10,9 +12,11 @@ import threading
 from pathlib import Path
 
 import snakemake
+from snakemake.io import _IOFile
 from snakemake.scheduling.job_scheduler import JobScheduler
 
 from pipeline import run_snakemake
+from pipeline.snakemake_checksums import known_checksums
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -26,6 +30,9 @@ def test_pinned_snakemake_is_the_patched_one() -> None:
     assert subclass._schedule_reevalutation is not JobScheduler._schedule_reevalutation
     assert run_snakemake.known_input_sizes(subclass)
     assert subclass.update_input_sizes is not JobScheduler.update_input_sizes
+    io_subclass = type("IOFile", (_IOFile,), {})
+    assert known_checksums(io_subclass)
+    assert io_subclass.checksum is not _IOFile.checksum
 
 
 def test_many_requests_one_timer() -> None:
@@ -83,6 +90,40 @@ def test_runs_a_workflow_and_reports_failure(tmp_path: Path) -> None:
     failed = _run(tmp_path)
     assert failed.returncode == 1
     assert "Error in rule bad" in failed.stderr
+
+
+def test_metadata_records_hold_each_inputs_checksum(tmp_path: Path) -> None:
+    """Jobs of two outputs each, reading the same inputs (one rewritten between the runs): each
+    output's metadata record holds the SHA-256 of the input versions it was made from."""
+    (tmp_path / "a.txt").write_text("a\n")
+    (tmp_path / "b.txt").write_text("b\n")
+    (tmp_path / "Snakefile").write_text(
+        "rule all:\n"
+        "    input: expand('out/{i}.{x}', i=range(3), x=('p', 'q'))\n"
+        "rule one:\n"
+        "    input: 'a.txt', 'b.txt'\n"
+        "    output: 'out/{i}.p', 'out/{i}.q'\n"
+        "    shell: 'cat {input} > {output[0]}; cat {input} > {output[1]}'\n"
+    )
+
+    def recorded() -> set[tuple[str, str]]:
+        pairs = set()
+        for record in (tmp_path / ".snakemake" / "metadata").iterdir():
+            pairs |= set(json.loads(record.read_text())["input_checksums"].items())
+        return pairs
+
+    def sha(name: str) -> str:
+        return "sha256:" + hashlib.sha256((tmp_path / name).read_bytes()).hexdigest()
+
+    done = _run(tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert recorded() == {("a.txt", sha("a.txt")), ("b.txt", sha("b.txt"))}
+    old_b = sha("b.txt")
+    (tmp_path / "b.txt").write_text("b, changed\n")
+    again = _run(tmp_path, "--forcerun", "one", "--rerun-triggers", "mtime")
+    assert again.returncode == 0, again.stderr
+    assert sha("b.txt") != old_b
+    assert recorded() == {("a.txt", sha("a.txt")), ("b.txt", sha("b.txt"))}
 
 
 def test_local_runs_leave_the_slurm_plugin_out(tmp_path: Path) -> None:
