@@ -100,7 +100,10 @@ $(PROJECT_STAMP): $(STAMP) pyproject.toml
 SNAKEMAKE_RUN := PYTHONPATH=$(CURDIR) $(VENV)/bin/python -m pipeline.run_snakemake
 
 # How `workflow` runs the jobs: here, on CORES cores; `make reproduce-slurm` passes the profile.
-WORKFLOW_ARGS ?= --cores $(CORES)
+# Snakemake's greedy scheduler, not its default MILP one: the jobs' priorities (pipeline/
+# job_priority.py) decide the order either way, and the MILP one solved a problem with an
+# external solver (CBC, a subprocess) at each of ~40 selections, ~0.4 CPU-s a full run.
+WORKFLOW_ARGS ?= --cores $(CORES) --scheduler greedy
 # CONFIG=my.yaml: your settings over config/config.yaml (Snakemake's --configfile), checked
 # strictly by pipeline/check_config.py before Snakemake reads them
 CONFIG ?=
