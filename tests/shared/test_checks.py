@@ -267,6 +267,48 @@ def test_a_repeated_residual_is_tidied_once_and_shown_for_every_element(monkeypa
     assert row.residual == "-x; -x; 0; -x"
 
 
+def _numeric_residual_point_by_point(residuals, scales, sample=None, seed=0) -> float:
+    """numeric_residual as it was written before it called its function on all points at once:
+    one call per point, the worst finite ratio kept (a NaN ratio never replaces it)."""
+    import numpy as np
+
+    from derivations.checks import N_POINTS
+
+    symbols = sorted(set().union(*(e.free_symbols for e in [*residuals, *scales])), key=str)
+    rng = np.random.default_rng(seed)
+    values_at = sp.lambdify(symbols, [*residuals, *scales], "numpy")
+    n, worst = len(residuals), 0.0
+    for _ in range(N_POINTS):
+        point = [rng.uniform(*((sample or {}).get(s, (0.15, 1.3)))) for s in symbols]
+        with np.errstate(all="ignore"):
+            values = [complex(v) for v in values_at(*point)]
+        for r, s in zip(values[:n], values[n:], strict=True):
+            if np.isfinite(r):
+                worst = max(worst, abs(r) / (abs(s) + 1e-300))
+    return worst
+
+
+def test_the_numeric_residual_is_the_one_of_a_call_per_point():
+    from derivations.checks import numeric_residual
+
+    y = sp.Symbol("y", real=True)
+    cases = [
+        ([sp.sin(x) * sp.cos(y) - sp.sin(x + y) / 2, sp.S(3)], [sp.Abs(sp.sin(x)) + 1, sp.S.One]),
+        ([sp.sqrt(x - 1) - x, x], [x + 1, sp.nan]),  # NaN residuals skipped, NaN scale ignored
+        ([sp.atan2(y, -x) + sp.tan(x) * y], [sp.Abs(sp.tan(x) * y) + 1]),
+        ([sp.S(2)], [sp.S.One]),  # no symbols at all
+    ]
+    for residuals, scales in cases:
+        assert numeric_residual(residuals, scales) == _numeric_residual_point_by_point(
+            residuals, scales
+        )
+    sample = {x: (2.0, 3.0)}
+    residuals, scales = [sp.sqrt(x - 1) - x], [x]
+    assert numeric_residual(residuals, scales, sample, seed=3) == (
+        _numeric_residual_point_by_point(residuals, scales, sample, seed=3)
+    )
+
+
 def test_the_numeric_residual_of_several_elements_is_the_worst_element():
     from derivations.checks import numeric_residual
 

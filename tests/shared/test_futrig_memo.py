@@ -10,7 +10,7 @@ import random
 import sympy as sp
 
 from derivations import futrig_memo
-from derivations.futrig_memo import memoised_futrig
+from derivations.futrig_memo import memoised_futrig, memoised_trig_factor
 
 _trigsimp = importlib.import_module("sympy.simplify.trigsimp")
 
@@ -79,3 +79,46 @@ def test_the_audit_and_the_derive_run_with_the_memo(monkeypatch):
     )
     artefact.build_frames()
     assert seen == [True, True]
+
+
+def test_trigsimp_and_simplify_give_the_same_expressions_with_factor_memoised():
+    exprs = _expressions(3, seed=5)
+    small = sp.sin(phi) ** 2 * sp.cos(theta) / (1 - sp.cos(phi) ** 2) + sp.sin(theta) ** 2
+    plain = [sp.srepr(sp.trigsimp(e)) for e in exprs] + [sp.srepr(sp.simplify(small))]
+    original = _trigsimp.factor
+    with memoised_futrig(), memoised_trig_factor() as memo:
+        memoised = [sp.srepr(sp.trigsimp(e)) for e in exprs]
+        memoised.append(sp.srepr(sp.simplify(small)))
+        with memoised_trig_factor() as inner:
+            assert inner is memo
+        assert _trigsimp.factor is not original
+        # an option is passed through, not remembered
+        assert _trigsimp.factor(sp.sin(lam) ** 2 - 1, deep=True) == sp.factor(
+            sp.sin(lam) ** 2 - 1, deep=True
+        )
+    assert memoised == plain
+    assert memo and all(sp.factor(e) == f for e, f in memo.items())
+    assert _trigsimp.factor is original
+
+
+def test_another_sympy_version_factors_unchanged(monkeypatch):
+    monkeypatch.setattr(futrig_memo.sp, "__version__", "0.0")
+    original = _trigsimp.factor
+    with memoised_trig_factor() as memo:
+        assert _trigsimp.factor is original
+        sp.trigsimp(sp.sin(lam) ** 2 + sp.cos(lam) ** 2)
+    assert memo == {}
+
+
+def test_the_audit_runs_with_factor_memoised(monkeypatch):
+    from derivations import checks
+
+    seen = []
+
+    def check(c):
+        seen.append(getattr(_trigsimp.factor, "memo", None) is not None)
+        return checks.AuditRow(c.equation, "not_checkable", "", "x")
+
+    monkeypatch.setattr(checks, "run_check", check)
+    checks.run_audit([checks.Check("1", not_checkable="x")])
+    assert seen == [True] and not hasattr(_trigsimp.factor, "memo")
