@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -194,6 +195,20 @@ def test_full_run_reports_make_failure(tmp_path: Path, monkeypatch, capsys) -> N
     assert "make workflow failed in the copy (status 2)" in out
 
 
+def test_full_run_needs_no_results_here(tmp_path: Path, monkeypatch, capsys) -> None:
+    """A fresh clone has no results/: the full run (`make bench`) starts all the same (it
+    reads the copy's results), where reading the last run's would be refused."""
+    repo = _git_repo(tmp_path)
+    shutil.rmtree(repo / "results")
+    (repo / "Makefile").write_text("workflow:\n\t@exit 3\n")
+    (repo / ".venv").mkdir()
+    monkeypatch.chdir(repo)
+    assert bench_workflow.main(["--noop-repeat", "0"]) == 2
+    assert "--results results: not a directory" in capsys.readouterr().err
+    assert bench_workflow.main(["--full-run", "--noop-repeat", "0"]) == 1
+    assert "make workflow failed in the copy" in capsys.readouterr().out
+
+
 NESTED = """
 import a0
 class C:
@@ -252,3 +267,12 @@ def _same_imports(ast, source: str) -> list:
     found = [n for n in code_inputs._statements(tree) if isinstance(n, ast.Import | ast.ImportFrom)]
     assert sorted(map(ast.dump, found)) == sorted(map(ast.dump, every))
     return found
+
+
+def test_noop_judged_by_its_wall_time(capsys: pytest.CaptureFixture[str]) -> None:
+    """The no-op target (<= 3 s) is judged on the median wall time; CPU is printed beside."""
+    bench_workflow._print_noop([(1.0, 2.0), (1.2, 4.0), (1.1, 2.5)])
+    out = capsys.readouterr().out
+    assert "median 2.50 s wall, 1.10 CPU-s" in out and out.rstrip().endswith("meets it")
+    bench_workflow._print_noop([(1.0, 3.5), (1.2, 4.0), (1.1, 2.5)])
+    assert capsys.readouterr().out.rstrip().endswith("misses it")
