@@ -4,7 +4,7 @@
 [--scaling 100,1000,10000] [--max-cpu-s 300] [--full] [--workflow-runs 10000] [--jobs 2]
 [--chunk-runs N]`` (or ``make bench``). Times are CPU seconds of this process
 (``time.process_time``) or of a child (``resource``), so a loaded machine inflates them less;
-part 4 also prints wall time, the only one. Four parts:
+part 4 also prints wall time, the only one. Five parts (run in the order 1, 2, 3, 5, 4):
 
 1. each filter's CPU time on the scenario's ``--runs`` runs (one pass; numba compiled, cached);
 2. our UKF against filterpy 2.0.0's ``UnscentedKalmanFilter`` on the SAME runs' first
@@ -25,32 +25,24 @@ part 4 also prints wall time, the only one. Four parts:
    runs (default: the scenario's, else the runs split evenly over ``--jobs``, in whole blocks),
    at most ``--jobs`` at once (Snakemake's ``--cores``), then the merge writing every results
    file. Wall time from the first start to the merge's end, the CPU of every process (the
-   chunks' sum is what one core would spend), the largest peak RSS of any one process.
+   chunks' sum is what one core would spend), the largest peak RSS of any one process;
+5. the cost against the steps: every filter on the ``--runs`` runs' first 1/8, 1/4, 1/2 and
+   all of their steps, in this process with freed memory kept (as the workflow's steps run;
+   the filters only: the metrics need the whole flight), the lengths interleaved
+   ``--repeats`` times: the median CPU per run-step of each and the ratio of the longest's
+   to the shortest's (1 = linear).
 
 The targets of issue 15 are printed against the measured values: UKF >= 100x filterpy per
 (step x run); 10,000 runs in <= 5 min and < 4 GB, on one core (part 3: CPU) and as the
 workflow runs them on ``--jobs`` cores (part 4: wall, and CPU beside it). filterpy is a
 test/benchmark dependency only.
 
-Last measured (issue 15, commit 384934f, a loaded 2-core machine): the full Monte Carlo of
-the paper scenario at 10,000 runs, run for real (``--child-runs 10000``): 438 CPU-s, peak
-RSS 1.67 GB, 4.38 us per run-step: the memory target met, the CPU target NOT met (1.46x
-short of 300 s on one core; ``monte_carlo.chunk_runs`` spreads it over jobs). Part 4
-(commit 2d05726, the same machine shared with three other sessions, load average 5-6 on its
-2 cores), 10,000 runs in chunks of 5,120 and 4,880 runs, 2 at once: chunks 199.0 and 214.5
-CPU-s, merge 3.2 CPU-s, 416.7 CPU-s in all (4.17 us per run-step); wall 931 s; peak RSS 1.37
-GB per process, <= 2.48 GB together. After the estimates' post-processing by slices
-(commit c3edbc8, load average 3-4): chunks 192.6 and 200.4, merge 2.7, 395.6 CPU-s in all
-(3.96 us per run-step), wall 631 s, 1.31 GB per process, <= 2.37 GB together. Memory met;
-wall NOT met as measured (the load; on 2 idle cores it would be about the larger chunk plus
-the merge, ~200 s, not measured); CPU on one core NOT met. With freed memory kept for the
-next block (:mod:`pipeline.altimeter_attitude.heap`) and the angle wrap without fmod
-(mc_sums._accumulate), measured alternately with the same code without them (commit
-b26be45), two pairs on the shared machine: 413.3 and 395.9 CPU-s before (chunks 198.1 + 212.0,
-192.7 + 199.9, merges 3.3), 351.2 and 337.4 after (171.8 + 177.2, 163.5 + 170.6; merges 2.2,
-3.3): 3.37-3.51 us per run-step, -15 %; peak RSS 1.33-1.40 GB per process (1.05-1.32
-before), <= 2.73 GB together. Wall 303 s after (load average ~3), 228 s before (a quieter
-spell): loads differed, not comparable. One core: still NOT met (337-351 > 300 CPU-s).
+Last measured (issue 15, 2026-12-05, 2-core Intel Xeon 2.6 GHz, idle; `make bench`): UKF
+0.690 us per step x run against filterpy's 215.9 us per step, median ratio 309x; the paper
+scenario's full Monte Carlo at 10,000 runs in one process 203 CPU-s (2.03 us per run-step),
+0.48 GB peak RSS (memory is one batch's histories: flat in the runs); part 4, two chunks of
+5,120 and 4,880 runs at once: 106 s wall, 205 CPU-s, <= 0.97 GB together. Every target met. The README's
+Benchmarks section keeps the table.
 """
 
 from __future__ import annotations
@@ -254,6 +246,38 @@ def scaling(scenario: Path, sizes: list[int], steps: int, max_cpu_s: float, full
         )
 
 
+def step_scaling(
+    sc, inputs: Inputs, parts: tuple[int, ...] = (8, 4, 2, 1), repeats: int = 3
+) -> list[float]:
+    """Part 5: every filter on the same runs' first ``T = steps / k`` steps (``k`` in
+    ``parts``), in this process, the lengths interleaved ``repeats`` times: CPU per run-step
+    flat in T means the cost is linear in the steps (part 3 shows it in the runs). Returns the
+    median us per run-step, shortest first."""
+    n, steps = inputs.n_runs, inputs.n_steps
+    print(
+        f"5. cost against steps: every filter on the same {n} runs, their first T steps "
+        f"(CPU, this process, median of {repeats} interleaved; part 3 varies the runs)"
+    )
+    from pipeline.altimeter_attitude.heap import keep_freed_memory
+
+    keep_freed_memory()  # as the workflow's Monte Carlo steps run (from here on: after parts 1-2)
+    lengths = [steps // k for k in parts]
+    us: dict[int, list[float]] = {t: [] for t in lengths}
+    for _ in range(repeats):
+        for t in lengths:
+            sec, _ = _cpu(lambda t=t: run.run_filters(sc, truncate(inputs, t), log=lambda m: None))
+            us[t].append(1e6 * sec / (n * t))
+    print(f"   {'steps':>7s} {'us/run-step':>12s}  (min-max)")
+    per = [statistics.median(us[t]) for t in lengths]
+    for t, med in zip(lengths, per, strict=True):
+        print(f"   {t:7d} {med:12.3f}  ({min(us[t]):.3f}-{max(us[t]):.3f})")
+    print(
+        f"   us per run-step at {steps} steps / at {steps // parts[0]}: {per[-1] / per[0]:.2f} "
+        "(1.00 = linear in the steps)"
+    )
+    return per
+
+
 def workflow_part(scenario: Path, n_runs: int, jobs: int, chunk_runs: int | None, steps: int):
     """Part 4: the Monte Carlo in chunk processes, ``jobs`` at once, and the merge."""
     from pipeline.altimeter_attitude.bench_chunks import workflow_run
@@ -299,7 +323,7 @@ def main(argv: list[str] | None = None) -> int:
     )
     parser.add_argument("--jobs", type=int, default=2, help="chunk processes at once (part 4)")
     parser.add_argument("--chunk-runs", type=int, default=None, help="runs per chunk (part 4)")
-    parser.add_argument("--parts", default="1,2,3,4", help="which parts to run")
+    parser.add_argument("--parts", default="1,2,3,5,4", help="which parts to run")
     parser.add_argument("--child-runs", type=int, default=None, help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.child_runs is not None:
@@ -325,6 +349,8 @@ def main(argv: list[str] | None = None) -> int:
         ukf_vs_filterpy(sc, truncate(inputs, min(args.steps, inputs.n_steps)), args.repeats)
     if "3" in parts:
         scaling(args.scenario, sorted(sizes), inputs.n_steps, args.max_cpu_s, args.full)
+    if "5" in parts:
+        step_scaling(sc, inputs, repeats=args.repeats)
     if "4" in parts and args.workflow_runs:
         workflow_part(args.scenario, args.workflow_runs, args.jobs, args.chunk_runs, inputs.n_steps)
     return 0

@@ -273,3 +273,19 @@ def test_linear_kf_chunk_terms_are_chunk_discretisation_bit_for_bit(short):
                 assert np.array_equal(got.view(np.int64), want.view(np.int64)), (i, step)
             else:
                 np.testing.assert_allclose(got, want, rtol=1e-14, atol=1e-18)
+
+
+def test_bench_step_scaling_times_each_length(short, monkeypatch, capsys):
+    """Part 5 of the benchmark runs every filter on each length and prints its cost per
+    run-step and the longest/shortest ratio (malloc left as it is in this test process)."""
+    from pipeline.altimeter_attitude import benchmark, heap
+
+    kept = []
+    monkeypatch.setattr(heap, "keep_freed_memory", lambda: kept.append(True) or True)
+    sc, inp = short
+    per = benchmark.step_scaling(sc, inp, parts=(2, 1), repeats=2)
+    out = capsys.readouterr().out
+    assert kept == [True] and len(per) == 2 and all(p > 0 for p in per)
+    for t in (inp.n_steps // 2, inp.n_steps):
+        assert f"\n   {t:7d} " in out
+    assert f"at {inp.n_steps} steps / at {inp.n_steps // 2}: {per[1] / per[0]:.2f}" in out
