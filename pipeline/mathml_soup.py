@@ -6,7 +6,7 @@ joined with single spaces, character references decoded and only ``&``, ``<``, `
 again, a string of ASCII whitespace only (outside ``<pre>``) cut to one newline or space. The
 MathML of a notebook page is about half of its tags, the highlighted code cells most of the
 rest. :func:`soup_form` gives what BeautifulSoup makes of one ``<math>`` element as
-:func:`pipeline.notebook_html.latex_to_mathml` writes it (docutils' ``tex2mathml``), or of one
+:func:`pipeline.latex_mathml.latex_to_mathml` writes it (docutils' ``tex2mathml``), or of one
 code cell as nbconvert highlights it (``<div class="highlight ..."><pre><span ...>``), in one
 regular-expression pass, or ``None`` for anything outside that form (the caller then lets
 BeautifulSoup do it): tags with lower-case names and double-quoted attribute values without

@@ -8,11 +8,9 @@ browsers render natively:
   as nbconvert's own markdown parser finds them;
 * ``text/latex`` outputs (SymPy's ``$\\displaystyle ...$``, IPython's ``Math``).
 
-The LaTeX goes through docutils' converter (``docutils.utils.math.latex2mathml``, a dependency of
-Snakemake, so of the lock), with one correction: docutils turns an accent followed by a
-subscript (``\\tilde a_x``) into ``munderover``, placing the subscript *under* the letter; here it
-is a subscript of the accented letter, as in TeX. LaTeX that docutils cannot convert fails the
-build with every offending formula listed (never raw LaTeX in the page).
+The LaTeX goes through :mod:`pipeline.latex_mathml` (docutils' converter with TeX's subscripts
+of accented letters). LaTeX it cannot convert fails the build with every offending formula
+listed (never raw LaTeX in the page).
 
 The page has no ``<script>`` (no require.js, MathJax, mermaid or widget manager), no external
 stylesheet, and figures as ``data:`` URIs. Its bytes depend only on the notebook and the code it
@@ -23,30 +21,17 @@ runs with a fixed ``PYTHONHASHSEED`` so that the iteration order of sets of stri
 every time, and a notebook that reads the clock (``time.perf_counter()``, ``datetime.now()``,
 ``%time``) is refused: what it prints would differ between runs (the workflow records a
 notebook's run time in the rule's benchmark file).
-
->>> print(latex_to_mathml(r"\\tilde a_x"))  # doctest: +NORMALIZE_WHITESPACE
-<math xmlns="http://www.w3.org/1998/Math/MathML"> <msub> <mover accent="true"> <mi>a</mi>
-<mo stretchy="false">~</mo> </mover> <mi>x</mi> </msub> </math>
->>> latex_to_mathml(r"\\frob x")
-Traceback (most recent call last):
-...
-pipeline.notebook_html.MathConversionError: cannot convert the LaTeX '\\\\frob x' to MathML: Unknown LaTeX command "\\frob".
 """
 
 from __future__ import annotations
 
-import contextlib
 import copy
 import os
 import re
-from collections.abc import Iterator
 from pathlib import Path
 from urllib.parse import quote
 
 import nbformat
-from docutils.utils.math import MathError
-from docutils.utils.math import latex2mathml as _l2m
-from docutils.utils.math import mathml_elements as _mml
 from jinja2 import DictLoader, pass_context
 from nbclient import NotebookClient
 from nbconvert import HTMLExporter
@@ -55,6 +40,7 @@ from nbconvert.filters.strings import clean_html
 from nbconvert.preprocessors import CoalesceStreamsPreprocessor
 
 from pipeline import notebook_kernel
+from pipeline.latex_mathml import MathConversionError, latex_to_mathml, output_latex_to_mathml
 from pipeline.mathml_soup import soup_form
 
 __all__ = [
@@ -66,9 +52,7 @@ __all__ = [
     "build",
     "clean_code_html",
     "execute",
-    "latex_to_mathml",
     "normalise",
-    "output_latex_to_mathml",
     "to_html",
     "wall_clock_reads",
 ]
@@ -85,64 +69,6 @@ KERNEL_SYMPY_CACHE_SIZE = "50000"
 KERNEL_EXTENSION = notebook_kernel.__name__
 #: the repository (on the kernel's ``PYTHONPATH``, for :data:`KERNEL_EXTENSION`)
 ROOT = Path(__file__).resolve().parents[1]
-
-
-class MathConversionError(ValueError):
-    """LaTeX that cannot be rendered as MathML."""
-
-
-# --------------------------------------------------------------------------- LaTeX -> MathML
-
-_handle_script = _l2m.handle_script_or_limit
-
-
-def _script_of_accented(node, c, limits=""):
-    """docutils' ``handle_script_or_limit``, except that a subscript of an accented symbol
-    (an ``mover`` made by ``\\hat``, ``\\tilde``, ``\\overline``..., which carries an ``accent``
-    attribute) is an ``msub`` of it, not an ``munderover`` (docutils keeps that for limits)."""
-    child = node[-1] if len(node) else None
-    if c == "_" and not limits and isinstance(child, _mml.mover) and "accent" in child.attrib:
-        node.pop()
-        new_node = _mml.msub(child)
-        node.append(new_node)
-        return new_node
-    return _handle_script(node, c, limits)
-
-
-@contextlib.contextmanager
-def _accent_subscripts() -> Iterator[None]:
-    _l2m.handle_script_or_limit = _script_of_accented
-    try:
-        yield
-    finally:
-        _l2m.handle_script_or_limit = _handle_script
-
-
-def latex_to_mathml(tex: str, display: bool = False) -> str:
-    """A ``<math>`` element (``display="block"`` if ``display``) for the LaTeX ``tex``."""
-    try:
-        with _accent_subscripts():
-            return _l2m.tex2mathml(tex.strip(), as_block=display)
-    except MathError as exc:
-        raise MathConversionError(f"cannot convert the LaTeX {tex!r} to MathML: {exc}") from None
-
-
-_OUTPUT_MATH = re.compile(
-    r"\A\s*(?:\$\$(?P<dd>[^$]*)\$\$|\$(?P<d>[^$]*)\$|\\\[(?P<b>.*)\\\])\s*\Z", re.S
-)
-
-
-def output_latex_to_mathml(latex: str) -> str:
-    """The MathML of a ``text/latex`` output: one formula in ``$...$``, ``$$...$$`` or
-    ``\\[...\\]``, or a bare LaTeX environment, rendered as display math."""
-    m = _OUTPUT_MATH.match(latex)
-    if m:
-        return latex_to_mathml(next(g for g in m.groups() if g is not None), display=True)
-    if latex.strip().startswith("\\begin{"):
-        return latex_to_mathml(latex, display=True)
-    raise MathConversionError(
-        f"a text/latex output is not one formula ($...$, $$...$$, \\[...\\]): {latex[:200]!r}"
-    )
 
 
 # --------------------------------------------------------------------------- the exporter

@@ -15,6 +15,7 @@ import nbformat
 import pytest
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook, new_output
 
+from pipeline import latex_mathml as LM
 from pipeline import notebook_html as NH
 
 PNG = "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8BQDwAEhQGAhKmMIQAAAABJRU5ErkJggg=="
@@ -38,32 +39,32 @@ def _tags(el: ET.Element) -> list[str]:
 def test_accented_symbol_takes_a_subscript_beside_it():
     # docutils alone gives munderover(a, x, ~): the x under the letter
     for tex in (r"\tilde a_x", r"\hat{x}_{1}", r"\dot\omega_x", r"\overline{x}_1"):
-        root = _tree(NH.latex_to_mathml(tex))
+        root = _tree(LM.latex_to_mathml(tex))
         assert _local(root[0].tag) == "msub", (tex, _tags(root))
         assert _local(root[0][0].tag) == "mover", (tex, _tags(root))
         assert "munderover" not in _tags(root), tex
-    both = _tree(NH.latex_to_mathml(r"\tilde a_x^2"))
+    both = _tree(LM.latex_to_mathml(r"\tilde a_x^2"))
     assert [_local(both[0].tag), _local(both[0][0].tag)] == ["msubsup", "mover"]
 
 
 def test_limits_keep_munderover_and_the_converter_is_left_as_found():
-    assert "munderover" in NH.latex_to_mathml(r"\sum_{i=1}^n x_i", display=True)
+    assert "munderover" in LM.latex_to_mathml(r"\sum_{i=1}^n x_i", display=True)
     from docutils.utils.math import latex2mathml
 
-    assert latex2mathml.handle_script_or_limit is NH._handle_script  # restored after use
+    assert latex2mathml.handle_script_or_limit is LM._handle_script  # restored after use
     assert "munderover" in latex2mathml.tex2mathml(r"\tilde a_x")  # docutils' own behaviour
 
 
 def test_display_and_inline_math():
-    block = NH.latex_to_mathml(r"x = \frac{a}{b} \qquad \text{(eq. 1)}", display=True)
+    block = LM.latex_to_mathml(r"x = \frac{a}{b} \qquad \text{(eq. 1)}", display=True)
     assert block.startswith('<math xmlns="http://www.w3.org/1998/Math/MathML" display="block">')
     assert "<mfrac>" in block and "<mtext>(eq. 1)</mtext>" in block
-    assert 'display="block"' not in NH.latex_to_mathml("x")
+    assert 'display="block"' not in LM.latex_to_mathml("x")
 
 
 def test_unsupported_latex_is_a_precise_error():
-    with pytest.raises(NH.MathConversionError, match=r"'\\\\frob\{x\}'.*Unknown LaTeX command"):
-        NH.latex_to_mathml(r"\frob{x}")
+    with pytest.raises(LM.MathConversionError, match=r"'\\\\frob\{x\}'.*Unknown LaTeX command"):
+        LM.latex_to_mathml(r"\frob{x}")
 
 
 @pytest.mark.parametrize(
@@ -72,13 +73,13 @@ def test_unsupported_latex_is_a_precise_error():
      r"\begin{matrix}\sin x\end{matrix}"],
 )  # fmt: skip
 def test_latex_outputs_are_display_math(latex):
-    out = NH.output_latex_to_mathml(latex)
+    out = LM.output_latex_to_mathml(latex)
     assert 'display="block"' in out and ("sin" in out)
 
 
 def test_latex_output_that_is_not_one_formula_is_refused():
-    with pytest.raises(NH.MathConversionError, match="not one formula"):
-        NH.output_latex_to_mathml(r"the angle $x$ and $y$ are small")
+    with pytest.raises(LM.MathConversionError, match="not one formula"):
+        LM.output_latex_to_mathml(r"the angle $x$ and $y$ are small")
 
 
 # --------------------------------------------------------------------------- the page
@@ -430,7 +431,7 @@ def test_soup_form_is_what_beautifulsoup_writes(tex):
     from pipeline.mathml_soup import soup_form
 
     for display in (False, True):
-        mathml = NH.latex_to_mathml(tex, display=display)
+        mathml = LM.latex_to_mathml(tex, display=display)
         assert soup_form(mathml) == str(BeautifulSoup(mathml, features="html.parser"))
 
 
