@@ -16,6 +16,7 @@ import pytest
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook, new_output
 
 from pipeline import latex_mathml as LM
+from pipeline import notebook_determinism as ND
 from pipeline import notebook_html as NH
 
 PNG = "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8BQDwAEhQGAhKmMIQAAAABJRU5ErkJggg=="
@@ -146,7 +147,7 @@ class _Refs(HTMLParser):
 
 
 def test_page_has_mathml_and_loads_nothing():
-    html = NH.to_html(NH.normalise(_notebook()), "demo")
+    html = NH.to_html(ND.normalise(_notebook()), "demo")
     refs = _Refs()
     refs.feed(html)
     assert "<title>demo</title>" in html
@@ -174,8 +175,8 @@ def test_every_unconvertible_formula_is_listed():
 
 
 def test_normalise_removes_what_varies_between_runs():
-    a = NH.to_html(NH.normalise(_notebook()), "demo")
-    b = NH.to_html(NH.normalise(_notebook("f9e8d", "0x55d0c0ffee10", split=True)), "demo")
+    a = NH.to_html(ND.normalise(_notebook()), "demo")
+    b = NH.to_html(ND.normalise(_notebook("f9e8d", "0x55d0c0ffee10", split=True)), "demo")
     assert a == b
     assert 'id="T_c1o3"' in a and "#T_c1o3_row0" in a and "T_a1b2c" not in a
     assert "&lt;object object at 0x1&gt;" in a
@@ -191,7 +192,7 @@ def test_normalise_keeps_equal_addresses_equal_and_distinct_ones_distinct():
         new_output("stream", name="stdout", text="<f at 0xaaaa10> <g at 0xbbbb20> <f at 0xaaaa10>"),
         new_output("stream", name="stderr", text="warn"),
     ]
-    out = NH.normalise(nb).cells[0].outputs
+    out = ND.normalise(nb).cells[0].outputs
     assert out[0].text == "<f at 0x1> <g at 0x2> <f at 0x1>"
     assert [o.name for o in out] == ["stdout", "stderr"]  # different streams stay apart
 
@@ -370,10 +371,10 @@ def test_code_kept_out_of_beautifulsoup_gives_the_same_page(source, monkeypatch)
     forms = []
     with monkeypatch.context() as m:
         m.setattr(NH, "soup_form", lambda fragment: forms.append(soup_form(fragment)) or forms[-1])
-        fast = NH.to_html(NH.normalise(nb), "demo")
+        fast = NH.to_html(ND.normalise(nb), "demo")
     assert sum(bool(f and f.startswith("<div")) for f in forms) == 2  # both cells kept out
     monkeypatch.setattr(NH, "soup_form", lambda fragment: None)
-    assert NH.to_html(NH.normalise(nb), "demo") == fast
+    assert NH.to_html(ND.normalise(nb), "demo") == fast
 
 
 @pytest.mark.parametrize(
@@ -410,9 +411,9 @@ def test_mathml_kept_out_of_beautifulsoup_gives_the_same_page(markdown, monkeypa
     nb = _notebook()
     nb.cells.insert(1, new_markdown_cell(markdown))
     nb.cells[1].id = "markdown-2"
-    fast = NH.to_html(NH.normalise(nb), "demo")
+    fast = NH.to_html(ND.normalise(nb), "demo")
     monkeypatch.setattr(NH, "soup_form", lambda mathml: None)
-    assert NH.to_html(NH.normalise(nb), "demo") == fast
+    assert NH.to_html(ND.normalise(nb), "demo") == fast
 
 
 @pytest.mark.parametrize(
@@ -445,7 +446,7 @@ def test_a_heading_keeps_its_formulas_as_mathml(soup_shortcut, monkeypatch):
     nb = new_notebook(
         cells=[new_markdown_cell("### Method 1 (eq. 19): at $\\tau$ = 0°, $n \\ge 3$ runs\n\n$a$")]
     )
-    page = NH.to_html(NH.normalise(nb), "demo")
+    page = NH.to_html(ND.normalise(nb), "demo")
     assert "ns0" not in page
     m = re.search(r'<h3 id="([^"]+)">(.*?)<a class="anchor-link" href="#([^"]+)">', page, re.S)
     assert m, page[-3000:]
